@@ -1,0 +1,26 @@
+// The renderers behind one interface. A backend owns an offscreen framebuffer (RGBA8, 24-bit
+// depth), makes it current, and points the GL dispatch at itself, so one drawing routine written
+// with plain gl* calls renders on any of them.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "image/image.h"
+
+namespace ffc::backends {
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;
+  // Makes a width x height framebuffer current, in GL's default state, and loads the dispatch.
+  // Throws std::runtime_error if the context cannot be made.
+  virtual void begin(int width, int height) = 0;
+  // Finishes drawing and reads the colour buffer back, top row first.
+  virtual image::Image read() = 0;
+};
+
+// "mesa" (Mesa's fixed-function pipeline, offscreen). Throws std::invalid_argument otherwise.
+std::unique_ptr<Backend> make(const std::string& name);
+
+}  // namespace ffc::backends

@@ -1,0 +1,55 @@
+#include "backends/mesa/mesa_backend.h"
+
+#include <GL/osmesa.h>
+
+#include <cstring>
+#include <stdexcept>
+
+#include "gl/dispatch.h"
+
+namespace ffc::backends {
+
+MesaBackend::~MesaBackend() {
+  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+}
+
+static void* osmesa_loader(const char* name) {
+  return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+}
+
+void MesaBackend::begin(int width, int height) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw std::runtime_error("mesa: framebuffer size " + std::to_string(width) + "x" +
+                             std::to_string(height) + " is outside 1..16384");
+  // A fresh context per begin(): every picture starts from GL's default state.
+  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+  {
+    // A compatibility context: the fixed-function pipeline is what we compare against.
+    const int attribs[] = {OSMESA_FORMAT,        OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,    24,
+                           OSMESA_STENCIL_BITS,  0,
+                           OSMESA_PROFILE,       OSMESA_COMPAT_PROFILE,
+                           0};
+    context_ = OSMesaCreateContextAttribs(attribs, nullptr);
+    if (!context_) throw std::runtime_error("mesa: OSMesaCreateContextAttribs failed");
+  }
+  width_ = width;
+  height_ = height;
+  buffer_.assign(size_t(width) * height * 4, 0);
+  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(), GL_UNSIGNED_BYTE, width, height))
+    throw std::runtime_error("mesa: OSMesaMakeCurrent failed");
+  const auto missing = gl::load(osmesa_loader);
+  if (!missing.empty()) throw std::runtime_error("mesa: OSMesa does not provide " + missing.front());
+  glViewport(0, 0, width, height);
+}
+
+image::Image MesaBackend::read() {
+  glFinish();
+  image::Image img(width_, height_);
+  const size_t row = size_t(width_) * 4;
+  for (int y = 0; y < height_; ++y)  // OSMesa's rows are bottom-up
+    std::memcpy(&img.rgba[size_t(y) * row], &buffer_[size_t(height_ - 1 - y) * row], row);
+  return img;
+}
+
+}  // namespace ffc::backends

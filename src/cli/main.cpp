@@ -1,0 +1,22 @@
+// ffcompat: the legacy fixed-function lighting pipeline, rendered and compared.
+#include <iostream>
+
+#include "cli/common.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ffcompat: legacy OpenGL fixed-function lighting, rendered and checked against Mesa"};
+  app.require_subcommand(1);
+  ffc::cli::add_render(app);
+  ffc::cli::add_normals(app);
+  ffc::cli::add_compare(app);
+  ffc::cli::add_shading(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "ffcompat: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
