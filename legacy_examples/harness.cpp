@@ -1,0 +1,162 @@
+#include "harness.h"
+
+#include <cctype>
+#include <exception>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "backends/backend.h"
+#include "gl/dispatch.h"
+#include "image/image.h"
+
+#ifdef FFCOMPAT_EXAMPLES_WITH_GLFW
+#define GLFW_INCLUDE_NONE  // the GL names come from the dispatch
+#include <GLFW/glfw3.h>
+static_assert(GLFW_KEY_1 == '1' && GLFW_KEY_W == 'W' && GLFW_KEY_SPACE == ' ');
+static_assert(GLFW_KEY_MINUS == ffc::examples::key::kMinus && GLFW_KEY_EQUAL == ffc::examples::key::kEqual &&
+              GLFW_KEY_ESCAPE == ffc::examples::key::kEscape &&
+              GLFW_KEY_KP_SUBTRACT == ffc::examples::key::kKpSubtract &&
+              GLFW_KEY_KP_ADD == ffc::examples::key::kKpAdd);
+#endif
+
+namespace ffc::examples {
+
+int key_from_name(const std::string& name) {
+  if (name.size() == 1) {
+    const unsigned char c = static_cast<unsigned char>(name[0]);
+    if (std::isdigit(c) || std::isalpha(c)) return std::toupper(c);
+  }
+  static const std::map<std::string, int> named = {
+      {"+", key::kKpAdd},      {"plus", key::kKpAdd},  {"kp+", key::kKpAdd},
+      {"-", key::kMinus},      {"minus", key::kMinus}, {"kp-", key::kKpSubtract},
+      {"=", key::kEqual},      {"space", ' '},         {"esc", key::kEscape},
+      {"escape", key::kEscape}};
+  std::string lower;
+  for (char c : name) lower += char(std::tolower(static_cast<unsigned char>(c)));
+  const auto it = named.find(lower);
+  return it == named.end() ? -1 : it->second;
+}
+
+namespace {
+
+struct Options {
+  bool headless = false, json = false;
+  std::string out, keys, backend = "mesa";
+  int frames = 0;
+};
+
+int render_headless(const Example& ex, const Options& opt) {
+  auto backend = backends::make(opt.backend);  // throws for an unknown name
+  backend->begin(ex.width, ex.height);         // sets the viewport
+  ex.draw(ex.width, ex.height);
+  const image::Image img = backend->read();
+  image::write_png(opt.out, img);
+  if (opt.json)
+    std::cout << nlohmann::json{{"example", ex.name}, {"out", opt.out}, {"width", img.width},
+                                {"height", img.height}, {"backend", backend->name()}}
+                     .dump()
+              << std::endl;
+  return 0;
+}
+
+#ifdef FFCOMPAT_EXAMPLES_WITH_GLFW
+void* glfw_loader(const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
+
+void on_glfw_key(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  const auto* ex = static_cast<const Example*>(glfwGetWindowUserPointer(window));
+  if (ex->on_key) ex->on_key(key);
+}
+
+int run_window(const Example& ex, const Options& opt) {
+  glfwSetErrorCallback([](int, const char* what) { std::cerr << "glfw: " << what << "\n"; });
+  if (!glfwInit()) {
+    std::cerr << ex.name << ": glfwInit failed (no display? try --headless --out F.png)\n";
+    return 1;
+  }
+  // No profile hint: a compatibility context, where the fixed-function pipeline lives.
+  GLFWwindow* window = glfwCreateWindow(ex.width, ex.height, ex.title.c_str(), nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    std::cerr << ex.name << ": could not create a GLFW window\n";
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  if (const auto missing = gl::load(glfw_loader); !missing.empty()) {
+    glfwTerminate();
+    std::cerr << ex.name << ": the window's GL context does not provide " << missing.front() << "\n";
+    return 1;
+  }
+  glfwSetWindowUserPointer(window, const_cast<Example*>(&ex));
+  glfwSetKeyCallback(window, on_glfw_key);
+  glfwSwapInterval(1);
+  for (int frame = 0; !glfwWindowShouldClose(window) && (opt.frames <= 0 || frame < opt.frames); ++frame) {
+    glfwPollEvents();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    glViewport(0, 0, w, h);
+    ex.draw(w, h);
+    glfwSwapBuffers(window);
+  }
+  glfwTerminate();
+  return 0;
+}
+#else
+int run_window(const Example& ex, const Options&) {
+  std::cerr << ex.name << ": built without GLFW (FFCOMPAT_WITH_GLFW=OFF); only --headless --out F.png works\n";
+  return 1;
+}
+#endif
+
+}  // namespace
+
+int run_example(int argc, char** argv, const Example& ex) {
+  CLI::App app{ex.title};
+  Options opt;
+  auto* headless = app.add_flag("--headless", opt.headless, "Render one frame offscreen and write --out");
+  app.add_option("--out", opt.out, "PNG file written by --headless")->needs(headless);
+  app.add_option("--backend", opt.backend, "Renderer for --headless")->capture_default_str();
+  app.add_option("--keys", opt.keys, "Space-separated keys pressed before drawing, e.g. \"3 3 2\"");
+  app.add_flag("--json", opt.json, "Print what --headless wrote as JSON")->needs(headless);
+  app.add_option("--frames", opt.frames, "Close the window after N frames (0: when closed)")
+      ->check(CLI::NonNegativeNumber)
+      ->excludes(headless);
+  if (ex.add_options) ex.add_options(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 1;  // --help is not an error
+  }
+
+  try {
+    // Every key name is checked before the first one is pressed.
+    std::vector<int> keys;
+    std::istringstream names(opt.keys);
+    for (std::string name; names >> name;) {
+      const int k = key_from_name(name);
+      if (k < 0) {
+        std::cerr << ex.name << ": unknown key \"" << name << "\" in --keys (use e.g. 1 W + - =)\n";
+        return 1;
+      }
+      keys.push_back(k);
+    }
+    if (ex.on_key)
+      for (int k : keys) ex.on_key(k);
+
+    if (!opt.headless) return run_window(ex, opt);
+    if (opt.out.empty()) {
+      std::cerr << ex.name << ": --headless needs --out F.png\n";
+      return 1;
+    }
+    return render_headless(ex, opt);
+  } catch (const std::exception& e) {
+    std::cerr << ex.name << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace ffc::examples
