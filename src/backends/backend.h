@@ -20,7 +20,8 @@ class Backend {
   virtual image::Image read() = 0;
 };
 
-// "mesa" (Mesa's fixed-function pipeline, offscreen). Throws std::invalid_argument otherwise.
+// "mesa" (Mesa's fixed-function pipeline, offscreen), "soft" (ours, float) or "soft-double" (ours,
+// the double reference). Throws std::invalid_argument otherwise.
 std::unique_ptr<Backend> make(const std::string& name);
 
 }  // namespace ffc::backends

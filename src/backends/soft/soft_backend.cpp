@@ -1,0 +1,34 @@
+#include "backends/soft/soft_backend.h"
+
+#include <cstring>
+#include <stdexcept>
+
+#include "gl/dispatch.h"
+#include "state/soft_gl.h"
+
+namespace ffc::backends {
+
+SoftBackend::~SoftBackend() {
+  if (state::Context::current() == context_.get()) state::Context::make_current(nullptr);
+}
+
+void SoftBackend::begin(int width, int height) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw std::runtime_error("soft: framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
+                             " is outside 1..16384");
+  context_ = std::make_unique<state::Context>(width, height, precision_);
+  state::Context::make_current(context_.get());
+  const auto missing = gl::load(state::proc_address);
+  if (!missing.empty()) throw std::runtime_error("soft: no entry point for " + missing.front());
+}
+
+image::Image SoftBackend::read() {
+  const raster::Framebuffer& fb = context_->framebuffer();
+  image::Image img(fb.width, fb.height);
+  const size_t row = size_t(fb.width) * 4;
+  for (int y = 0; y < fb.height; ++y)  // GL's row 0 is the bottom one
+    std::memcpy(&img.rgba[size_t(y) * row], &fb.color[size_t(fb.height - 1 - y) * row], row);
+  return img;
+}
+
+}  // namespace ffc::backends

@@ -1,0 +1,145 @@
+#include "lighting/lighting.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ffc::lighting {
+
+namespace {
+
+constexpr unsigned kAmbient = 0x1200, kDiffuse = 0x1201, kSpecular = 0x1202, kEmission = 0x1600,
+                   kAmbientAndDiffuse = 0x1602;
+
+template <typename T>
+V3<T> rgb(const glm::dvec4& c) {
+  return V3<T>(T(c.r), T(c.g), T(c.b));
+}
+
+bool tracks(const ModelParams& m, unsigned what) {
+  return m.cm_mode == what || (m.cm_mode == kAmbientAndDiffuse && (what == kAmbient || what == kDiffuse));
+}
+
+}  // namespace
+
+template <typename T>
+Prepared<T> prepare(const LightParams (&lights)[8], const MaterialParams (&mat)[2], const ModelParams& model,
+                    Key key) {
+  Prepared<T> c;
+  c.key = key;
+  c.model = model;
+  c.global_ambient = rgb<T>(model.ambient);
+  for (int f = 0; f < 2; ++f) {
+    c.mat[f] = mat[f];
+    c.scene[f] = rgb<T>(mat[f].emission) + rgb<T>(mat[f].ambient) * c.global_ambient;
+    c.alpha[f] = T(mat[f].diffuse.a);
+    c.shininess[f] = T(mat[f].shininess);
+  }
+  for (const LightParams& l : lights) {
+    if (!l.enabled) continue;
+    PreparedLight<T>& p = c.light[c.count++];
+    p.la = rgb<T>(l.ambient), p.ld = rgb<T>(l.diffuse), p.ls = rgb<T>(l.specular);
+    for (int f = 0; f < 2; ++f) {
+      p.amb[f] = p.la * rgb<T>(mat[f].ambient);
+      p.dif[f] = p.ld * rgb<T>(mat[f].diffuse);
+      p.spe[f] = p.ls * rgb<T>(mat[f].specular);
+    }
+    p.local = l.position.w != 0;
+    if (p.local) {
+      p.pos = V3<T>(glm::dvec3(l.position) / l.position.w);
+    } else {
+      const glm::dvec3 d(l.position);
+      const double len = glm::length(d);
+      p.pos = len > 0 ? V3<T>(d / len) : V3<T>(0);
+      // With an infinite viewer and a directional light, h does not depend on the vertex.
+      const glm::dvec3 h = glm::dvec3(p.pos) + glm::dvec3(0, 0, 1);
+      const double hl = glm::length(h);
+      p.half = hl > 0 ? V3<T>(h / hl) : V3<T>(0);
+    }
+    p.spot = l.spot_cutoff != 180;
+    if (p.spot) {
+      const double len = glm::length(l.spot_direction);
+      p.spot_dir = len > 0 ? V3<T>(l.spot_direction / len) : V3<T>(0);
+      p.spot_cos = T(std::cos(l.spot_cutoff * M_PI / 180));
+      p.spot_exp = T(l.spot_exponent);
+    }
+    p.k0 = T(l.constant_attenuation), p.k1 = T(l.linear_attenuation), p.k2 = T(l.quadratic_attenuation);
+    p.attenuated = p.local && (p.k0 != 1 || p.k1 != 0 || p.k2 != 0);
+  }
+  return c;
+}
+
+template <typename T>
+Lit<T> light(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, const V4<T>& color) {
+  const Key& key = c.key;
+  const V3<T> p = (p4.w != 0 && p4.w != 1) ? V3<T>(p4) / p4.w : V3<T>(p4);
+  const V3<T> cm = V3<T>(color);
+  // The eye direction for a local viewer: from the vertex toward the origin of eye space.
+  V3<T> to_eye(0, 0, 1);
+  if (key.local_viewer()) {
+    const T len = glm::length(p);
+    to_eye = len > 0 ? -p / len : V3<T>(0);
+  }
+  Lit<T> out;
+  const int faces = key.two_side() ? 2 : 1;
+  for (int f = 0; f < faces; ++f) {
+    const V3<T> nf = f == 0 ? n : -n;
+    const bool cm_on = key.color_material() && (c.model.cm_faces >> f & 1);
+    V3<T> prim = c.scene[f], sec(0);
+    T alpha = c.alpha[f];
+    bool track_amb = false, track_dif = false, track_spe = false;
+    if (cm_on) {
+      const ModelParams& m = c.model;
+      track_amb = tracks(m, kAmbient), track_dif = tracks(m, kDiffuse), track_spe = tracks(m, kSpecular);
+      const V3<T> ma = track_amb ? cm : rgb<T>(c.mat[f].ambient);
+      const V3<T> me = tracks(m, kEmission) ? cm : rgb<T>(c.mat[f].emission);
+      prim = me + ma * c.global_ambient;
+      if (track_dif) alpha = color.a;
+    }
+    for (int i = 0; i < c.count; ++i) {
+      const PreparedLight<T>& L = c.light[i];
+      V3<T> vp = L.pos;
+      T att = 1;
+      if (L.local) {
+        const V3<T> d = L.pos - p;
+        const T dist = glm::length(d);
+        vp = dist > 0 ? d / dist : V3<T>(0);
+        if (L.attenuated) att = T(1) / (L.k0 + L.k1 * dist + L.k2 * dist * dist);
+      }
+      if (L.spot) {
+        const T cos_angle = glm::dot(-vp, L.spot_dir);
+        if (cos_angle < L.spot_cos) continue;  // outside the cone: no contribution at all
+        att *= std::pow(std::max(cos_angle, T(0)), L.spot_exp);
+      }
+      const V3<T> amb = track_amb ? L.la * cm : L.amb[f];
+      const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];
+      const T ndotl = glm::dot(nf, vp);
+      V3<T> sum = amb + std::max(ndotl, T(0)) * dif;
+      if (ndotl > 0 && key.specular()) {
+        V3<T> h = L.half;
+        if (L.local || key.local_viewer()) {
+          h = vp + to_eye;
+          const T hl = glm::length(h);
+          h = hl > 0 ? h / hl : V3<T>(0);
+        }
+        const V3<T> spe = track_spe ? L.ls * cm : L.spe[f];
+        const V3<T> s = std::pow(std::max(glm::dot(nf, h), T(0)), c.shininess[f]) * spe;
+        if (key.separate_specular())
+          sec += att * s;
+        else
+          sum += s;
+      }
+      prim += att * sum;
+    }
+    out.primary[f] = glm::clamp(V4<T>(prim, alpha), T(0), T(1));
+    out.secondary[f] = glm::clamp(V4<T>(sec, T(0)), T(0), T(1));
+  }
+  if (faces == 1) out.primary[1] = out.primary[0], out.secondary[1] = out.secondary[0];
+  return out;
+}
+
+template Prepared<float> prepare(const LightParams (&)[8], const MaterialParams (&)[2], const ModelParams&, Key);
+template Prepared<double> prepare(const LightParams (&)[8], const MaterialParams (&)[2], const ModelParams&, Key);
+template Lit<float> light(const Prepared<float>&, const V4<float>&, const V3<float>&, const V4<float>&);
+template Lit<double> light(const Prepared<double>&, const V4<double>&, const V3<double>&, const V4<double>&);
+
+}  // namespace ffc::lighting

@@ -1,0 +1,61 @@
+// Clipping, triangle and line setup, flat and smooth interpolation, depth: from lit vertices in
+// clip space to pixels.
+#pragma once
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace ffc::raster {
+
+// A vertex after the vertex stage: clip-space position and its lit colours.
+struct Vertex {
+  glm::dvec4 clip;
+  glm::dvec4 front, back;            // primary colours, clamped
+  glm::dvec4 front_sec, back_sec;    // secondary (separate specular) colours
+};
+
+// GL's window: row 0 at the bottom.
+struct Framebuffer {
+  int width = 0, height = 0;
+  std::vector<uint8_t> color;   // RGBA8
+  std::vector<uint32_t> depth;  // 24-bit
+  Framebuffer(int w, int h) : width(w), height(h), color(size_t(w) * h * 4, 0), depth(size_t(w) * h, 0xFFFFFF) {}
+};
+
+struct State {
+  glm::ivec4 viewport;
+  glm::dvec2 depth_range{0, 1};
+  bool flat = false;
+  bool depth_test = false;
+  GLenum depth_func = GL_LESS;
+  bool cull = false;
+  GLenum cull_mode = GL_BACK, front_face = GL_CCW;
+  bool two_side = false;      // lighting on with two-sided model: back faces take the back colour
+  bool add_secondary = false; // separate specular: colour sum after interpolation
+};
+
+// A clipped primitive in window coordinates, as feedback reports it.
+struct WindowVertex {
+  glm::dvec3 pos;    // x, y, z in window coordinates
+  glm::dvec4 color;  // the colour chosen for the facing
+  double inv_w;      // 1 / clip w, for perspective-correct interpolation
+  glm::dvec4 sec;
+};
+
+// Clips a polygon (a triangle or a line when size 2) against the view volume and maps it to the
+// window. Returns the clipped polygon with colours chosen by facing; empty when culled or clipped
+// away. `provoking` is the vertex whose colours a flat primitive takes (it may be outside `prim`:
+// a quad split in two keeps its 4th vertex); null keeps every vertex's own colours (feedback).
+std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const State& s, const Vertex* provoking,
+                                      bool is_line, bool* back_facing = nullptr);
+
+void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const State& s);
+void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);
+void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);
+
+// GL's float-to-unorm8 conversion, rounding half to even as llvmpipe does.
+uint8_t to_unorm8(double c);
+
+}  // namespace ffc::raster

@@ -1,0 +1,906 @@
+#include "state/context.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace ffc::state {
+
+namespace {
+thread_local Context* g_current = nullptr;
+
+int light_index(GLenum light) { return light >= GL_LIGHT0 && light < GL_LIGHT0 + 8 ? int(light - GL_LIGHT0) : -1; }
+
+// How many values a glLight / glMaterial / glLightModel parameter takes; 0 for an unknown name.
+int light_param_count(GLenum p) {
+  switch (p) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
+    case GL_SPOT_DIRECTION: return 3;
+    case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION: case GL_LINEAR_ATTENUATION:
+    case GL_QUADRATIC_ATTENUATION: return 1;
+    default: return 0;
+  }
+}
+
+size_t type_size(GLenum t) {
+  switch (t) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+// Reads component k of an array element; `normalized` maps integers to [-1,1] or [0,1] as GL 2.1
+// does for normals and colours: signed (2c+1)/(2^b-1), unsigned c/(2^b-1).
+double read_component(const uint8_t* p, GLenum type, int k, bool normalized) {
+  switch (type) {
+    case GL_BYTE: { int8_t v; std::memcpy(&v, p + k, 1); return normalized ? (2.0 * v + 1) / 255.0 : v; }
+    case GL_UNSIGNED_BYTE: { uint8_t v = p[k]; return normalized ? v / 255.0 : v; }
+    case GL_SHORT: { int16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? (2.0 * v + 1) / 65535.0 : v; }
+    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? v / 65535.0 : v; }
+    case GL_INT: { int32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? (2.0 * v + 1) / 4294967295.0 : v; }
+    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? v / 4294967295.0 : v; }
+    case GL_FLOAT: { float v; std::memcpy(&v, p + 4 * k, 4); return v; }
+    case GL_DOUBLE: { double v; std::memcpy(&v, p + 8 * k, 8); return v; }
+    default: return 0;
+  }
+}
+
+const uint8_t* element(const ClientArray& a, GLint i) {
+  const size_t stride = a.stride ? size_t(a.stride) : a.size * type_size(a.type);
+  return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
+}
+
+bool valid_primitive(GLenum m) { return m <= GL_POLYGON; }  // GL_POINTS (0) .. GL_POLYGON (9)
+bool valid_face(GLenum f) { return f == GL_FRONT || f == GL_BACK || f == GL_FRONT_AND_BACK; }
+}  // namespace
+
+Context* Context::current() { return g_current; }
+void Context::make_current(Context* c) { g_current = c; }
+
+Context::Context(int width, int height, Precision precision)
+    : fb_(width, height), precision_(precision), viewport_(0, 0, width, height) {
+  lights_[0].diffuse = lights_[0].specular = glm::dvec4(1);
+}
+
+GLenum Context::GetError() {
+  if (in_begin_) {  // Mesa: returns 0 and records INVALID_OPERATION
+    error(GL_INVALID_OPERATION);
+    return GL_NO_ERROR;
+  }
+  const GLenum e = error_;
+  error_ = GL_NO_ERROR;
+  return e;
+}
+
+bool Context::outside_begin_end() {
+  if (in_begin_) error(GL_INVALID_OPERATION);
+  return !in_begin_;
+}
+
+bool* Context::capability(GLenum cap) {
+  switch (cap) {
+    case GL_LIGHTING: return &lighting_;
+    case GL_NORMALIZE: return &normalize_;
+    case GL_RESCALE_NORMAL: return &rescale_normal_;
+    case GL_COLOR_MATERIAL: return &color_material_;
+    case GL_DEPTH_TEST: return &depth_test_;
+    case GL_CULL_FACE: return &cull_face_;
+    default: {
+      const int i = light_index(cap);
+      return i >= 0 ? &lights_[i].enabled : nullptr;
+    }
+  }
+}
+
+void Context::set_enabled(GLenum cap, bool on) {
+  if (!outside_begin_end()) return;
+  bool* c = capability(cap);
+  if (!c) {
+    // Capabilities GL knows but this pipeline does not model are accepted and ignored.
+    static const GLenum known[] = {GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH,
+                                   GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_ALPHA_TEST, GL_FOG, GL_TEXTURE_2D,
+                                   GL_MULTISAMPLE, GL_POLYGON_OFFSET_FILL, GL_LINE_STIPPLE};
+    if (std::find(std::begin(known), std::end(known), cap) == std::end(known)) error(GL_INVALID_ENUM);
+    return;
+  }
+  *c = on;
+  constants_dirty_ = true;
+  if (cap == GL_COLOR_MATERIAL && on) Color(color_.r, color_.g, color_.b, color_.a);  // tracks at once
+}
+
+GLboolean Context::IsEnabled(GLenum cap) {
+  if (!outside_begin_end()) return GL_FALSE;
+  switch (cap) {
+    case GL_VERTEX_ARRAY: return vertex_array_.enabled;
+    case GL_NORMAL_ARRAY: return normal_array_.enabled;
+    case GL_COLOR_ARRAY: return color_array_.enabled;
+  }
+  bool* c = capability(cap);
+  if (!c) {
+    error(GL_INVALID_ENUM);
+    return GL_FALSE;
+  }
+  return *c;
+}
+
+void Context::set_client_state(GLenum array, bool on) {
+  ClientArray* a = array == GL_VERTEX_ARRAY   ? &vertex_array_
+                   : array == GL_NORMAL_ARRAY ? &normal_array_
+                   : array == GL_COLOR_ARRAY  ? &color_array_
+                                              : nullptr;
+  if (!a) {
+    static const GLenum known[] = {GL_TEXTURE_COORD_ARRAY, GL_INDEX_ARRAY, GL_EDGE_FLAG_ARRAY};
+    if (std::find(std::begin(known), std::end(known), array) == std::end(known)) error(GL_INVALID_ENUM);
+    return;
+  }
+  a->enabled = on;
+}
+
+// ---------------------------------------------------------------- lights and materials
+
+void Context::set_light(int i, GLenum pname, const double* v) {
+  lighting::LightParams& l = lights_[i];
+  const glm::dmat4& mv = modelview_.back();
+  switch (pname) {
+    case GL_AMBIENT: l.ambient = glm::make_vec4(v); break;
+    case GL_DIFFUSE: l.diffuse = glm::make_vec4(v); break;
+    case GL_SPECULAR: l.specular = glm::make_vec4(v); break;
+    case GL_POSITION: l.position = mv * glm::make_vec4(v); break;
+    case GL_SPOT_DIRECTION: l.spot_direction = glm::dmat3(mv) * glm::make_vec3(v); break;
+    case GL_SPOT_EXPONENT: l.spot_exponent = v[0]; break;
+    case GL_SPOT_CUTOFF: l.spot_cutoff = v[0]; break;
+    case GL_CONSTANT_ATTENUATION: l.constant_attenuation = v[0]; break;
+    case GL_LINEAR_ATTENUATION: l.linear_attenuation = v[0]; break;
+    case GL_QUADRATIC_ATTENUATION: l.quadratic_attenuation = v[0]; break;
+  }
+  constants_dirty_ = true;
+}
+
+void Context::Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
+  if (!outside_begin_end()) return;
+  const int i = light_index(light), n = light_param_count(pname);
+  if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
+  double v[4];
+  for (int k = 0; k < n; ++k) v[k] = params[k];
+  const double x = v[0];
+  if (pname == GL_SPOT_EXPONENT && !(x >= 0 && x <= 128)) return error(GL_INVALID_VALUE);
+  if (pname == GL_SPOT_CUTOFF && !((x >= 0 && x <= 90) || x == 180)) return error(GL_INVALID_VALUE);
+  if ((pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION || pname == GL_QUADRATIC_ATTENUATION) &&
+      !(x >= 0))
+    return error(GL_INVALID_VALUE);
+  set_light(i, pname, v);
+}
+
+void Context::Lightf(GLenum light, GLenum pname, GLfloat param) {
+  if (light_param_count(pname) > 1) {  // a vector parameter through the scalar call
+    if (outside_begin_end()) error(GL_INVALID_ENUM);
+    return;
+  }
+  Lightfv(light, pname, &param);
+}
+
+void Context::Lightiv(GLenum light, GLenum pname, const GLint* params) {
+  // Integer colours map [-2^31, 2^31-1] to [-1, 1]; positions and scalars convert directly.
+  GLfloat f[4] = {0, 0, 0, 0};
+  const int n = std::max(1, light_param_count(pname));
+  const bool color = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
+  for (int k = 0; k < n; ++k) f[k] = color ? GLfloat((2.0 * params[k] + 1) / 4294967295.0) : GLfloat(params[k]);
+  Lightfv(light, pname, f);
+}
+
+void Context::Lighti(GLenum light, GLenum pname, GLint param) {
+  if (light_param_count(pname) > 1) {
+    if (outside_begin_end()) error(GL_INVALID_ENUM);
+    return;
+  }
+  const GLfloat f = GLfloat(param);
+  Lightfv(light, pname, &f);
+}
+
+void Context::LightModelfv(GLenum pname, const GLfloat* p) {
+  if (!outside_begin_end()) return;
+  switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT: model_.ambient = glm::dvec4(p[0], p[1], p[2], p[3]); break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: model_.local_viewer = p[0] != 0; break;
+    case GL_LIGHT_MODEL_TWO_SIDE: model_.two_side = p[0] != 0; break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+      if (p[0] == GL_SINGLE_COLOR) model_.separate_specular = false;
+      else if (p[0] == GL_SEPARATE_SPECULAR_COLOR) model_.separate_specular = true;
+      else return error(GL_INVALID_ENUM);
+      break;
+    default: return error(GL_INVALID_ENUM);
+  }
+  constants_dirty_ = true;
+}
+
+void Context::LightModelf(GLenum pname, GLfloat param) {
+  if (pname == GL_LIGHT_MODEL_AMBIENT) {
+    if (outside_begin_end()) error(GL_INVALID_ENUM);
+    return;
+  }
+  LightModelfv(pname, &param);
+}
+
+void Context::LightModeli(GLenum pname, GLint param) { LightModelf(pname, GLfloat(param)); }
+
+bool Context::set_material(GLenum face, GLenum pname, const double* v) {
+  if (!valid_face(face)) return error(GL_INVALID_ENUM), false;
+  switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE:
+    case GL_COLOR_INDEXES: break;
+    case GL_SHININESS:
+      if (!(v[0] >= 0 && v[0] <= 128)) return error(GL_INVALID_VALUE), false;
+      break;
+    default: return error(GL_INVALID_ENUM), false;
+  }
+  for (int f = 0; f < 2; ++f) {
+    if (f == 0 && face == GL_BACK) continue;
+    if (f == 1 && face == GL_FRONT) continue;
+    lighting::MaterialParams& m = materials_[f];
+    const glm::dvec4 c(v[0], v[1], v[2], v[3]);
+    switch (pname) {
+      case GL_AMBIENT: m.ambient = c; break;
+      case GL_DIFFUSE: m.diffuse = c; break;
+      case GL_SPECULAR: m.specular = c; break;
+      case GL_EMISSION: m.emission = c; break;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = c; break;
+      case GL_SHININESS: m.shininess = v[0]; break;
+    }
+  }
+  constants_dirty_ = true;
+  return true;
+}
+
+void Context::Materialfv(GLenum face, GLenum pname, const GLfloat* params) {
+  // Allowed between glBegin and glEnd: it changes the material of the vertices that follow.
+  double v[4] = {params[0], 0, 0, 0};
+  if (pname != GL_SHININESS)
+    for (int k = 1; k < (pname == GL_COLOR_INDEXES ? 3 : 4); ++k) v[k] = params[k];
+  set_material(face, pname, v);
+}
+
+void Context::Materialf(GLenum face, GLenum pname, GLfloat param) {
+  if (pname != GL_SHININESS) return error(GL_INVALID_ENUM);
+  Materialfv(face, pname, &param);
+}
+
+void Context::Materiali(GLenum face, GLenum pname, GLint param) { Materialf(face, pname, GLfloat(param)); }
+
+void Context::ColorMaterial(GLenum face, GLenum mode) {
+  if (!outside_begin_end()) return;
+  if (!valid_face(face)) return error(GL_INVALID_ENUM);
+  if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+      mode != GL_AMBIENT_AND_DIFFUSE)
+    return error(GL_INVALID_ENUM);
+  cm_face_ = face, cm_mode_ = mode;
+  model_.cm_faces = face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3;
+  model_.cm_mode = mode;
+  constants_dirty_ = true;
+  if (color_material_) Color(color_.r, color_.g, color_.b, color_.a);
+}
+
+void Context::ShadeModel(GLenum mode) {
+  if (!outside_begin_end()) return;
+  if (mode != GL_FLAT && mode != GL_SMOOTH) return error(GL_INVALID_ENUM);
+  shade_model_ = mode;
+}
+
+void Context::FrontFace(GLenum mode) {
+  if (!outside_begin_end()) return;
+  if (mode != GL_CW && mode != GL_CCW) return error(GL_INVALID_ENUM);
+  front_face_ = mode;
+}
+
+void Context::CullFace(GLenum mode) {
+  if (!outside_begin_end()) return;
+  if (!valid_face(mode)) return error(GL_INVALID_ENUM);
+  cull_mode_ = mode;
+}
+
+void Context::DepthFunc(GLenum func) {
+  if (!outside_begin_end()) return;
+  if (func < GL_NEVER || func > GL_ALWAYS) return error(GL_INVALID_ENUM);
+  depth_func_ = func;
+}
+
+void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
+  if (!outside_begin_end()) return;
+  const int i = light_index(light), n = light_param_count(pname);
+  if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
+  const lighting::LightParams& l = lights_[i];
+  glm::dvec4 v(0);
+  switch (pname) {
+    case GL_AMBIENT: v = l.ambient; break;
+    case GL_DIFFUSE: v = l.diffuse; break;
+    case GL_SPECULAR: v = l.specular; break;
+    case GL_POSITION: v = l.position; break;
+    case GL_SPOT_DIRECTION: v = glm::dvec4(l.spot_direction, 0); break;
+    case GL_SPOT_EXPONENT: v.x = l.spot_exponent; break;
+    case GL_SPOT_CUTOFF: v.x = l.spot_cutoff; break;
+    case GL_CONSTANT_ATTENUATION: v.x = l.constant_attenuation; break;
+    case GL_LINEAR_ATTENUATION: v.x = l.linear_attenuation; break;
+    case GL_QUADRATIC_ATTENUATION: v.x = l.quadratic_attenuation; break;
+  }
+  for (int k = 0; k < n; ++k) out[k] = GLfloat(v[k]);
+}
+
+void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
+  if (!outside_begin_end()) return;
+  if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
+  const lighting::MaterialParams& m = materials_[face == GL_BACK];
+  glm::dvec4 v;
+  switch (pname) {
+    case GL_AMBIENT: v = m.ambient; break;
+    case GL_DIFFUSE: v = m.diffuse; break;
+    case GL_SPECULAR: v = m.specular; break;
+    case GL_EMISSION: v = m.emission; break;
+    case GL_SHININESS: out[0] = GLfloat(m.shininess); return;
+    case GL_COLOR_INDEXES: out[0] = 0, out[1] = 1, out[2] = 1; return;
+    default: return error(GL_INVALID_ENUM);
+  }
+  for (int k = 0; k < 4; ++k) out[k] = GLfloat(v[k]);
+}
+
+// ---------------------------------------------------------------- glGet
+
+namespace {
+struct GetValue {
+  double v[16];
+  int n = 0;
+  bool color = false;  // converts to integers as GL colours do
+};
+}  // namespace
+
+#define FFC_GET(...)                          \
+  {                                           \
+    const double vals[] = {__VA_ARGS__};      \
+    r.n = int(sizeof vals / sizeof *vals);    \
+    std::copy(vals, vals + r.n, r.v);         \
+  }                                           \
+  break
+
+void Context::GetDoublev(GLenum pname, GLdouble* out) {
+  if (!outside_begin_end()) return;
+  GetValue r;
+  auto vec4 = [&](const glm::dvec4& c, bool color) {
+    for (int k = 0; k < 4; ++k) r.v[k] = c[k];
+    r.n = 4, r.color = color;
+  };
+  auto mat = [&](const glm::dmat4& m) {
+    std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, r.v);
+    r.n = 16;
+  };
+  switch (pname) {
+    case GL_MODELVIEW_MATRIX: mat(modelview_.back()); break;
+    case GL_PROJECTION_MATRIX: mat(projection_.back()); break;
+    case GL_MODELVIEW_STACK_DEPTH: FFC_GET(double(modelview_.size()));
+    case GL_PROJECTION_STACK_DEPTH: FFC_GET(double(projection_.size()));
+    case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth));
+    case GL_MATRIX_MODE: FFC_GET(double(matrix_mode_));
+    case GL_VIEWPORT: FFC_GET(double(viewport_[0]), double(viewport_[1]), double(viewport_[2]), double(viewport_[3]));
+    case GL_DEPTH_RANGE: FFC_GET(depth_range_.x, depth_range_.y);
+    case GL_MAX_LIGHTS: FFC_GET(8.0);
+    case GL_LIGHT_MODEL_AMBIENT: vec4(model_.ambient, true); break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: FFC_GET(double(model_.local_viewer));
+    case GL_LIGHT_MODEL_TWO_SIDE: FFC_GET(double(model_.two_side));
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+      FFC_GET(double(model_.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR));
+    case GL_SHADE_MODEL: FFC_GET(double(shade_model_));
+    case GL_COLOR_MATERIAL_FACE: FFC_GET(double(cm_face_));
+    case GL_COLOR_MATERIAL_PARAMETER: FFC_GET(double(cm_mode_));
+    case GL_FRONT_FACE: FFC_GET(double(front_face_));
+    case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_));
+    case GL_DEPTH_FUNC: FFC_GET(double(depth_func_));
+    case GL_CURRENT_COLOR: vec4(color_, true); break;
+    case GL_CURRENT_NORMAL: FFC_GET(normal_.x, normal_.y, normal_.z);
+    case GL_COLOR_CLEAR_VALUE: vec4(glm::dvec4(clear_color_), true); break;
+    case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_);
+    case GL_LINE_WIDTH: FFC_GET(double(line_width_));
+    case GL_RENDER_MODE: FFC_GET(double(render_mode_));
+    case GL_DEPTH_BITS: FFC_GET(24.0);
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: FFC_GET(8.0);
+    case GL_VERTEX_ARRAY_SIZE: FFC_GET(double(vertex_array_.size));
+    case GL_VERTEX_ARRAY_TYPE: FFC_GET(double(vertex_array_.type));
+    case GL_VERTEX_ARRAY_STRIDE: FFC_GET(double(vertex_array_.stride));
+    case GL_NORMAL_ARRAY_TYPE: FFC_GET(double(normal_array_.type));
+    case GL_NORMAL_ARRAY_STRIDE: FFC_GET(double(normal_array_.stride));
+    case GL_COLOR_ARRAY_SIZE: FFC_GET(double(color_array_.size));
+    case GL_COLOR_ARRAY_TYPE: FFC_GET(double(color_array_.type));
+    case GL_COLOR_ARRAY_STRIDE: FFC_GET(double(color_array_.stride));
+    case GL_VERTEX_ARRAY: FFC_GET(double(vertex_array_.enabled));
+    case GL_NORMAL_ARRAY: FFC_GET(double(normal_array_.enabled));
+    case GL_COLOR_ARRAY: FFC_GET(double(color_array_.enabled));
+    default: {
+      if (bool* c = capability(pname)) FFC_GET(double(*c));
+      return error(GL_INVALID_ENUM);
+    }
+  }
+  std::copy(r.v, r.v + r.n, out);
+}
+#undef FFC_GET
+
+void Context::GetFloatv(GLenum pname, GLfloat* out) {
+  GLdouble v[16];
+  const GLenum before = error_;
+  GetDoublev(pname, v);
+  if (error_ != before || in_begin_) return;
+  int n = 1;
+  switch (pname) {
+    case GL_MODELVIEW_MATRIX: case GL_PROJECTION_MATRIX: n = 16; break;
+    case GL_VIEWPORT: case GL_LIGHT_MODEL_AMBIENT: case GL_CURRENT_COLOR: case GL_COLOR_CLEAR_VALUE: n = 4; break;
+    case GL_CURRENT_NORMAL: n = 3; break;
+    case GL_DEPTH_RANGE: n = 2; break;
+  }
+  for (int k = 0; k < n; ++k) out[k] = GLfloat(v[k]);
+}
+
+void Context::GetIntegerv(GLenum pname, GLint* out) {
+  GLdouble v[16];
+  const GLenum before = error_;
+  GetDoublev(pname, v);
+  if (error_ != before || in_begin_) return;
+  int n = 1;
+  bool color = false;
+  switch (pname) {
+    case GL_MODELVIEW_MATRIX: case GL_PROJECTION_MATRIX: n = 16; break;
+    case GL_VIEWPORT: n = 4; break;
+    case GL_LIGHT_MODEL_AMBIENT: case GL_CURRENT_COLOR: case GL_COLOR_CLEAR_VALUE: n = 4, color = true; break;
+    case GL_CURRENT_NORMAL: n = 3, color = true; break;
+    case GL_DEPTH_RANGE: n = 2, color = true; break;
+  }
+  for (int k = 0; k < n; ++k) {
+    // Colours, normals and depth ranges map [-1,1] linearly onto the integer range.
+    const double x = color ? std::clamp(v[k], -1.0, 1.0) * 2147483647.0 : v[k];
+    out[k] = GLint(std::lround(x));
+  }
+}
+
+// ---------------------------------------------------------------- matrices
+
+std::vector<glm::dmat4>& Context::stack() { return matrix_mode_ == GL_PROJECTION ? projection_ : modelview_; }
+
+void Context::MatrixMode(GLenum mode) {
+  if (!outside_begin_end()) return;
+  // GL_TEXTURE is a valid mode; this pipeline has no texturing, so it keeps the modelview.
+  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) return error(GL_INVALID_ENUM);
+  if (mode != GL_TEXTURE) matrix_mode_ = mode;
+}
+
+void Context::LoadIdentity() { LoadMatrix(glm::dmat4(1)); }
+
+void Context::LoadMatrix(const glm::dmat4& m) {
+  if (!outside_begin_end()) return;
+  stack().back() = m;
+}
+
+void Context::MultMatrix(const glm::dmat4& m) {
+  if (!outside_begin_end()) return;
+  stack().back() = stack().back() * m;
+}
+
+void Context::PushMatrix() {
+  if (!outside_begin_end()) return;
+  auto& s = stack();
+  if (s.size() >= kMaxStackDepth) return error(GL_STACK_OVERFLOW);
+  s.push_back(s.back());
+}
+
+void Context::PopMatrix() {
+  if (!outside_begin_end()) return;
+  auto& s = stack();
+  if (s.size() <= 1) return error(GL_STACK_UNDERFLOW);
+  s.pop_back();
+}
+
+void Context::Rotate(double angle, double x, double y, double z) {
+  const double len = std::sqrt(x * x + y * y + z * z);
+  if (len == 0) return MultMatrix(glm::dmat4(1));  // GL leaves the matrix unchanged
+  MultMatrix(glm::rotate(glm::dmat4(1), glm::radians(angle), glm::dvec3(x, y, z) / len));
+}
+
+void Context::Scale(double x, double y, double z) { MultMatrix(glm::scale(glm::dmat4(1), glm::dvec3(x, y, z))); }
+
+void Context::Translate(double x, double y, double z) {
+  MultMatrix(glm::translate(glm::dmat4(1), glm::dvec3(x, y, z)));
+}
+
+void Context::Ortho(double l, double r, double b, double t, double n, double f) {
+  if (!outside_begin_end()) return;
+  if (l == r || b == t || n == f) return error(GL_INVALID_VALUE);
+  MultMatrix(glm::orthoRH_NO(l, r, b, t, n, f));
+}
+
+void Context::Frustum(double l, double r, double b, double t, double n, double f) {
+  if (!outside_begin_end()) return;
+  if (n <= 0 || f <= 0 || l == r || b == t || n == f) return error(GL_INVALID_VALUE);
+  MultMatrix(glm::frustumRH_NO(l, r, b, t, n, f));
+}
+
+void Context::Viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
+  if (!outside_begin_end()) return;
+  if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  viewport_ = {x, y, std::min(w, 16384), std::min(h, 16384)};
+}
+
+void Context::DepthRange(double n, double f) {
+  if (!outside_begin_end()) return;
+  depth_range_ = {std::clamp(n, 0.0, 1.0), std::clamp(f, 0.0, 1.0)};
+}
+
+void Context::ClearColor(float r, float g, float b, float a) {
+  if (!outside_begin_end()) return;
+  clear_color_ = glm::clamp(glm::vec4(r, g, b, a), 0.0f, 1.0f);
+}
+
+void Context::ClearDepth(double d) {
+  if (!outside_begin_end()) return;
+  clear_depth_ = std::clamp(d, 0.0, 1.0);
+}
+
+void Context::Clear(GLbitfield mask) {
+  if (!outside_begin_end()) return;
+  if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
+    return error(GL_INVALID_VALUE);
+  if (render_mode_ != GL_RENDER) return;
+  raster::clear(fb_, mask & GL_COLOR_BUFFER_BIT, mask & GL_DEPTH_BUFFER_BIT, clear_color_, clear_depth_);
+}
+
+void Context::LineWidth(float w) {
+  if (!outside_begin_end()) return;
+  if (!(w > 0)) return error(GL_INVALID_VALUE);
+  line_width_ = w;
+}
+
+// ---------------------------------------------------------------- vertices
+
+lighting::Key Context::key() const {
+  lighting::Key k;
+  if (!lighting_) return k;
+  bool specular = false;
+  for (int i = 0; i < 8; ++i) {
+    const lighting::LightParams& l = lights_[i];
+    if (!l.enabled) continue;
+    k.bits |= 1u << i;
+    if (l.position.w != 0) k.bits |= 1u << (8 + i);
+    if (l.spot_cutoff != 180) k.bits |= 1u << (16 + i);
+    if (l.position.w != 0 &&
+        (l.constant_attenuation != 1 || l.linear_attenuation != 0 || l.quadratic_attenuation != 0))
+      k.extra |= 1u << i;
+    for (int f = 0; f < 2; ++f)
+      specular |= glm::dvec3(l.specular) * glm::dvec3(materials_[f].specular) != glm::dvec3(0);
+  }
+  if (color_material_ && (cm_mode_ == GL_SPECULAR)) specular = true;
+  if (model_.two_side) k.bits |= 1u << 24;
+  if (model_.local_viewer) k.bits |= 1u << 25;
+  if (model_.separate_specular) k.bits |= 1u << 26;
+  if (color_material_) k.bits |= 1u << 27;
+  if (normalize_) k.bits |= 1u << 28;
+  if (rescale_normal_) k.bits |= 1u << 29;
+  if (specular) k.extra |= 1u << 8;
+  if (materials_[0].shininess == 0) k.extra |= 1u << 9;
+  return k;
+}
+
+void Context::prepare_lighting() {
+  lighting::ModelParams m = model_;
+  m.color_material = color_material_;
+  if (precision_ == Precision::Float)
+    prepared_f_ = lighting::prepare<float>(lights_, materials_, m, key());
+  else
+    prepared_d_ = lighting::prepare<double>(lights_, materials_, m, key());
+  constants_dirty_ = false;
+}
+
+void Context::Normal(double x, double y, double z) { normal_ = {x, y, z}; }
+
+void Context::Color(double r, double g, double b, double a) {
+  color_ = {r, g, b, a};
+  if (!color_material_) return;
+  // The tracked material parameters follow the current colour (their change is applied per
+  // vertex by the lighting stage, so the constants stay valid).
+  for (int f = 0; f < 2; ++f) {
+    if (!(model_.cm_faces >> f & 1)) continue;
+    lighting::MaterialParams& m = materials_[f];
+    switch (cm_mode_) {
+      case GL_AMBIENT: m.ambient = color_; break;
+      case GL_DIFFUSE: m.diffuse = color_; break;
+      case GL_SPECULAR: m.specular = color_; break;
+      case GL_EMISSION: m.emission = color_; break;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = color_; break;
+    }
+  }
+}
+
+void Context::process_vertex(const glm::dvec4& obj) {
+  const glm::dmat4& mv = modelview_.back();
+  const glm::dvec4 eye = mv * obj;
+  raster::Vertex v;
+  v.clip = projection_.back() * eye;
+  if (!lighting_) {
+    v.front = v.back = glm::clamp(color_, 0.0, 1.0);
+    v.front_sec = v.back_sec = glm::dvec4(0);
+  } else {
+    if (constants_dirty_) prepare_lighting();
+    // Normals transform by the inverse transpose of the modelview's upper 3x3.
+    const glm::dmat3 inv = glm::inverse(glm::dmat3(mv));
+    glm::dvec3 n = normal_ * inv;  // row vector times M^-1
+    if (normalize_) {
+      const double len = glm::length(n);
+      if (len > 0) n /= len;  // a zero normal stays zero: ambient and emission only
+    } else if (rescale_normal_) {
+      const double f = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
+      if (f > 0) n /= f;
+    }
+    if (precision_ == Precision::Float) {
+      const auto lit = lighting::light<float>(prepared_f_, glm::vec4(eye), glm::vec3(n), glm::vec4(color_));
+      v.front = lit.primary[0], v.back = lit.primary[1];
+      v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
+    } else {
+      const auto lit = lighting::light<double>(prepared_d_, eye, n, color_);
+      v.front = lit.primary[0], v.back = lit.primary[1];
+      v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
+    }
+  }
+  verts_.push_back(v);
+}
+
+void Context::Vertex(double x, double y, double z, double w) {
+  if (!in_begin_) return;  // outside glBegin/glEnd a vertex has no effect (undefined in GL)
+  process_vertex({x, y, z, w});
+}
+
+void Context::Begin(GLenum mode) {
+  if (in_begin_) return error(GL_INVALID_OPERATION);
+  if (!valid_primitive(mode)) return error(GL_INVALID_ENUM);
+  in_begin_ = true;
+  prim_mode_ = mode;
+  verts_.clear();
+}
+
+void Context::End() {
+  if (!in_begin_) return error(GL_INVALID_OPERATION);
+  in_begin_ = false;
+  flush_primitive(true);
+}
+
+void Context::VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
+  if (!outside_begin_end()) return;
+  if (size < 2 || size > 4) return error(GL_INVALID_VALUE);
+  if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) return error(GL_INVALID_ENUM);
+  if (stride < 0) return error(GL_INVALID_VALUE);
+  vertex_array_ = {vertex_array_.enabled, size, type, stride, p};
+}
+
+void Context::NormalPointer(GLenum type, GLsizei stride, const void* p) {
+  if (!outside_begin_end()) return;
+  if (type != GL_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE)
+    return error(GL_INVALID_ENUM);
+  if (stride < 0) return error(GL_INVALID_VALUE);
+  normal_array_ = {normal_array_.enabled, 3, type, stride, p};
+}
+
+void Context::ColorPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
+  if (!outside_begin_end()) return;
+  if (size != 3 && size != 4) return error(GL_INVALID_VALUE);
+  if (type_size(type) == 0) return error(GL_INVALID_ENUM);
+  if (stride < 0) return error(GL_INVALID_VALUE);
+  color_array_ = {color_array_.enabled, size, type, stride, p};
+}
+
+void Context::fetch_vertex(GLint i) {
+  if (normal_array_.enabled) {
+    const uint8_t* p = element(normal_array_, i);
+    Normal(read_component(p, normal_array_.type, 0, true), read_component(p, normal_array_.type, 1, true),
+           read_component(p, normal_array_.type, 2, true));
+  }
+  if (color_array_.enabled) {
+    const uint8_t* p = element(color_array_, i);
+    const GLenum t = color_array_.type;
+    Color(read_component(p, t, 0, true), read_component(p, t, 1, true), read_component(p, t, 2, true),
+          color_array_.size == 4 ? read_component(p, t, 3, true) : 1.0);
+  }
+  if (vertex_array_.enabled) {
+    const uint8_t* p = element(vertex_array_, i);
+    glm::dvec4 v(0, 0, 0, 1);
+    for (int k = 0; k < vertex_array_.size; ++k) v[k] = read_component(p, vertex_array_.type, k, false);
+    process_vertex(v);
+  }
+}
+
+void Context::ArrayElement(GLint i) {
+  if (i < 0) return error(GL_INVALID_VALUE);
+  if (!in_begin_) return;
+  fetch_vertex(i);
+}
+
+void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
+  if (!outside_begin_end()) return;
+  if (!valid_primitive(mode)) return error(GL_INVALID_ENUM);
+  if (count < 0 || first < 0) return error(GL_INVALID_VALUE);
+  if (!vertex_array_.enabled) return;
+  prim_mode_ = mode;
+  verts_.clear();
+  for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
+  flush_primitive(false);
+}
+
+void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (!outside_begin_end()) return;
+  if (!valid_primitive(mode)) return error(GL_INVALID_ENUM);
+  if (count < 0) return error(GL_INVALID_VALUE);
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
+  if (!vertex_array_.enabled || !indices) return;
+  prim_mode_ = mode;
+  verts_.clear();
+  const uint8_t* p = static_cast<const uint8_t*>(indices);
+  for (GLsizei i = 0; i < count; ++i) fetch_vertex(GLint(read_component(p, type, i, false)));
+  flush_primitive(false);
+}
+
+// ---------------------------------------------------------------- primitives
+
+void Context::flush_primitive(bool) {
+  raster::State rs;
+  rs.viewport = viewport_;
+  rs.depth_range = depth_range_;
+  rs.flat = shade_model_ == GL_FLAT;
+  rs.depth_test = depth_test_;
+  rs.depth_func = depth_func_;
+  rs.cull = cull_face_;
+  rs.cull_mode = cull_mode_;
+  rs.front_face = front_face_;
+  rs.two_side = lighting_ && model_.two_side;
+  rs.add_secondary = lighting_ && model_.separate_specular;
+  const bool feedback = render_mode_ == GL_FEEDBACK;
+  if (render_mode_ == GL_SELECT) return;  // selection is not modelled: nothing is drawn
+
+  auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+    std::vector<raster::Vertex> prim;
+    for (size_t i : idx) prim.push_back(verts_[i]);
+    const bool is_line = kind == GL_LINE_TOKEN, is_point = kind == GL_POINT_TOKEN;
+    if (is_point) prim.push_back(prim[0]);  // a point clips like a degenerate line
+    // Feedback reports each vertex's own colour (Mesa does not flatten there).
+    const auto w = raster::clip_and_map(prim, rs, feedback ? nullptr : &verts_[provoking], is_line || is_point);
+    if (w.empty()) return;
+    if (!feedback) {
+      if (is_point) {
+        std::vector<raster::WindowVertex> pt = {w[0], w[0]};
+        pt[1].pos.x += 1;
+        raster::draw_line(fb_, pt, rs);
+      } else if (is_line) {
+        raster::draw_line(fb_, w, rs);
+      } else {
+        raster::draw_polygon(fb_, w, rs);
+      }
+      return;
+    }
+    auto put = [&](double x) {
+      if (feedback_count_ < feedback_size_) feedback_[feedback_count_] = GLfloat(x);
+      else feedback_overflow_ = true;
+      ++feedback_count_;
+    };
+    const size_t n = is_point ? 1 : w.size();
+    put(kind);
+    if (kind == GL_POLYGON_TOKEN) put(double(n));
+    for (size_t i = 0; i < n; ++i) {
+      const raster::WindowVertex& v = w[i];
+      put(v.pos.x), put(v.pos.y);
+      if (feedback_type_ != GL_2D) put(v.pos.z);
+      if (feedback_type_ == GL_4D_COLOR_TEXTURE) put(1 / v.inv_w);
+      if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE ||
+          feedback_type_ == GL_4D_COLOR_TEXTURE)
+        for (int k = 0; k < 4; ++k) put(v.color[k]);
+      if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
+        put(0), put(0), put(0), put(1);
+    }
+  };
+
+  const size_t n = verts_.size();
+  switch (prim_mode_) {
+    case GL_POINTS:
+      for (size_t i = 0; i < n; ++i) emit({i}, i, GL_POINT_TOKEN);
+      break;
+    case GL_LINES:
+      for (size_t i = 0; i + 1 < n; i += 2) emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
+      break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+      for (size_t i = 0; i + 1 < n; ++i) emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
+      if (prim_mode_ == GL_LINE_LOOP && n >= 2) emit({n - 1, 0}, 0, GL_LINE_TOKEN);
+      break;
+    case GL_TRIANGLES:
+      for (size_t i = 0; i + 2 < n; i += 3) emit({i, i + 1, i + 2}, i + 2, GL_POLYGON_TOKEN);
+      break;
+    case GL_TRIANGLE_STRIP:
+      for (size_t i = 0; i + 2 < n; ++i)
+        if (i % 2 == 0) emit({i, i + 1, i + 2}, i + 2, GL_POLYGON_TOKEN);
+        else emit({i + 1, i, i + 2}, i + 2, GL_POLYGON_TOKEN);
+      break;
+    case GL_TRIANGLE_FAN:
+      for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, i + 1, GL_POLYGON_TOKEN);
+      break;
+    case GL_QUADS:  // split as llvmpipe does: (0,1,3), (1,2,3); the 4th vertex provokes
+      for (size_t i = 0; i + 3 < n; i += 4) {
+        emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+      }
+      break;
+    case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2); vertex 2i+3 provokes
+      for (size_t i = 0; i + 3 < n; i += 2) {
+        emit({i, i + 1, i + 2}, i + 3, GL_POLYGON_TOKEN);
+        emit({i + 1, i + 3, i + 2}, i + 3, GL_POLYGON_TOKEN);
+      }
+      break;
+    case GL_POLYGON:  // a fan from the first vertex, which provokes
+      for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
+      break;
+  }
+  verts_.clear();
+}
+
+// ---------------------------------------------------------------- feedback and read-back
+
+void Context::FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
+  if (!outside_begin_end()) return;
+  if (render_mode_ == GL_FEEDBACK) return error(GL_INVALID_OPERATION);
+  if (type != GL_2D && type != GL_3D && type != GL_3D_COLOR && type != GL_3D_COLOR_TEXTURE &&
+      type != GL_4D_COLOR_TEXTURE)
+    return error(GL_INVALID_ENUM);
+  if (size < 0) return error(GL_INVALID_VALUE);
+  feedback_ = buffer, feedback_size_ = size, feedback_type_ = type;
+}
+
+GLint Context::RenderMode(GLenum mode) {
+  if (!outside_begin_end()) return 0;
+  if (mode != GL_RENDER && mode != GL_FEEDBACK && mode != GL_SELECT) return error(GL_INVALID_ENUM), 0;
+  if (mode == GL_FEEDBACK && !feedback_) return error(GL_INVALID_OPERATION), 0;
+  GLint result = 0;
+  if (render_mode_ == GL_FEEDBACK) result = feedback_overflow_ ? -1 : feedback_count_;
+  render_mode_ = mode;
+  feedback_count_ = 0;
+  feedback_overflow_ = false;
+  return result;
+}
+
+void Context::PixelStorei(GLenum pname, GLint param) {
+  if (!outside_begin_end()) return;
+  if (pname == GL_PACK_ALIGNMENT || pname == GL_UNPACK_ALIGNMENT) {
+    if (param != 1 && param != 2 && param != 4 && param != 8) return error(GL_INVALID_VALUE);
+    if (pname == GL_PACK_ALIGNMENT) pack_alignment_ = param;
+    return;
+  }
+  error(GL_INVALID_ENUM);
+}
+
+void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
+  if (!outside_begin_end()) return;
+  if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
+  if (format != GL_RGBA || type != GL_UNSIGNED_BYTE) return error(GL_INVALID_ENUM);
+  auto* out = static_cast<uint8_t*>(pixels);
+  const size_t row = (size_t(w) * 4 + pack_alignment_ - 1) / pack_alignment_ * pack_alignment_;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const int fx = x + i, fy = y + j;
+      if (fx < 0 || fy < 0 || fx >= fb_.width || fy >= fb_.height) continue;
+      std::memcpy(out + row * j + size_t(i) * 4, &fb_.color[(size_t(fy) * fb_.width + fx) * 4], 4);
+    }
+}
+
+const GLubyte* Context::GetString(GLenum name) {
+  if (!outside_begin_end()) return nullptr;
+  switch (name) {
+    case GL_VENDOR: return reinterpret_cast<const GLubyte*>("ffcompat");
+    case GL_RENDERER: return reinterpret_cast<const GLubyte*>("ffcompat soft (fixed-function)");
+    case GL_VERSION: return reinterpret_cast<const GLubyte*>("2.1 ffcompat");
+    case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>("");
+  }
+  error(GL_INVALID_ENUM);
+  return nullptr;
+}
+
+}  // namespace ffc::state

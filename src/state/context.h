@@ -1,0 +1,173 @@
+// Our GL context: the fixed-function state with GL's defaults and errors (OpenGL 2.1
+// compatibility, sections 2.6 to 2.14), the vertex stage that lights every vertex as it is
+// submitted, and the hand-off to the rasterizer or to feedback.
+//
+// Entry points validate first and change nothing on error (they record the first error for
+// glGetError), then apply. Two dirty bits follow Mesa's light.c: `constants_dirty_` (a colour or
+// position changed: re-prepare the constants) and the lighting key (the pipeline's shape).
+#pragma once
+#include <GL/gl.h>
+
+#include <array>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "lighting/lighting.h"
+#include "raster/raster.h"
+
+namespace ffc::state {
+
+enum class Precision { Float, Double };
+
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+};
+
+class Context {
+ public:
+  Context(int width, int height, Precision precision = Precision::Float);
+
+  raster::Framebuffer& framebuffer() { return fb_; }
+  Precision precision() const { return precision_; }
+  static Context* current();
+  static void make_current(Context* c);
+
+  // --- GL entry points (names as in GL, without the prefix) ---
+  GLenum GetError();
+  void Enable(GLenum cap) { set_enabled(cap, true); }
+  void Disable(GLenum cap) { set_enabled(cap, false); }
+  GLboolean IsEnabled(GLenum cap);
+  void EnableClientState(GLenum a) { set_client_state(a, true); }
+  void DisableClientState(GLenum a) { set_client_state(a, false); }
+
+  void Lightfv(GLenum light, GLenum pname, const GLfloat* params);
+  void Lightf(GLenum light, GLenum pname, GLfloat param);
+  void Lightiv(GLenum light, GLenum pname, const GLint* params);
+  void Lighti(GLenum light, GLenum pname, GLint param);
+  void LightModelfv(GLenum pname, const GLfloat* params);
+  void LightModelf(GLenum pname, GLfloat param);
+  void LightModeli(GLenum pname, GLint param);
+  void Materialfv(GLenum face, GLenum pname, const GLfloat* params);
+  void Materialf(GLenum face, GLenum pname, GLfloat param);
+  void Materiali(GLenum face, GLenum pname, GLint param);
+  void ColorMaterial(GLenum face, GLenum mode);
+  void ShadeModel(GLenum mode);
+  void FrontFace(GLenum mode);
+  void CullFace(GLenum mode);
+  void DepthFunc(GLenum func);
+  void GetLightfv(GLenum light, GLenum pname, GLfloat* params);
+  void GetMaterialfv(GLenum face, GLenum pname, GLfloat* params);
+  void GetDoublev(GLenum pname, GLdouble* params);
+  void GetFloatv(GLenum pname, GLfloat* params);
+  void GetIntegerv(GLenum pname, GLint* params);
+
+  void MatrixMode(GLenum mode);
+  void LoadIdentity();
+  void LoadMatrix(const glm::dmat4& m);
+  void MultMatrix(const glm::dmat4& m);
+  void PushMatrix();
+  void PopMatrix();
+  void Rotate(double angle_deg, double x, double y, double z);
+  void Scale(double x, double y, double z);
+  void Translate(double x, double y, double z);
+  void Ortho(double l, double r, double b, double t, double n, double f);
+  void Frustum(double l, double r, double b, double t, double n, double f);
+  void Viewport(GLint x, GLint y, GLsizei w, GLsizei h);
+  void DepthRange(double n, double f);
+  void ClearColor(float r, float g, float b, float a);
+  void ClearDepth(double d);
+  void Clear(GLbitfield mask);
+  void LineWidth(float w);
+
+  void Begin(GLenum mode);
+  void End();
+  void Vertex(double x, double y, double z, double w);
+  void Normal(double x, double y, double z);
+  void Color(double r, double g, double b, double a);
+  void VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+  void NormalPointer(GLenum type, GLsizei stride, const void* p);
+  void ColorPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+  void DrawArrays(GLenum mode, GLint first, GLsizei count);
+  void DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
+  void ArrayElement(GLint i);
+
+  void FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer);
+  GLint RenderMode(GLenum mode);
+  void ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels);
+  void PixelStorei(GLenum pname, GLint param);
+  const GLubyte* GetString(GLenum name);
+
+  // Not GL: what the checker and tests read.
+  lighting::Key key() const;
+  const lighting::LightParams& light(int i) const { return lights_[i]; }
+  const lighting::MaterialParams& material(int face) const { return materials_[face]; }
+
+ private:
+  void error(GLenum e) {
+    if (error_ == GL_NO_ERROR) error_ = e;
+  }
+  bool outside_begin_end();  // records INVALID_OPERATION inside glBegin/glEnd
+  void set_enabled(GLenum cap, bool on);
+  void set_client_state(GLenum array, bool on);
+  bool* capability(GLenum cap);
+  std::vector<glm::dmat4>& stack();
+  void set_light(int i, GLenum pname, const double* v);
+  bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
+  void fetch_vertex(GLint i);  // from the enabled client arrays, as glArrayElement
+  void process_vertex(const glm::dvec4& obj);
+  void prepare_lighting();
+  void flush_primitive(bool end_of_begin);
+
+  raster::Framebuffer fb_;
+  Precision precision_;
+  GLenum error_ = GL_NO_ERROR;
+
+  // Enables
+  bool lighting_ = false, normalize_ = false, rescale_normal_ = false, color_material_ = false;
+  bool depth_test_ = false, cull_face_ = false;
+  GLenum shade_model_ = GL_SMOOTH, front_face_ = GL_CCW, cull_mode_ = GL_BACK, depth_func_ = GL_LESS;
+  GLenum cm_face_ = GL_FRONT_AND_BACK, cm_mode_ = GL_AMBIENT_AND_DIFFUSE;
+  lighting::LightParams lights_[8];
+  lighting::MaterialParams materials_[2];
+  lighting::ModelParams model_;
+  float line_width_ = 1;
+
+  // Transform
+  GLenum matrix_mode_ = GL_MODELVIEW;
+  std::vector<glm::dmat4> modelview_{glm::dmat4(1)}, projection_{glm::dmat4(1)};
+  static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for both stacks
+  glm::ivec4 viewport_;
+  glm::dvec2 depth_range_{0, 1};
+  glm::vec4 clear_color_{0, 0, 0, 0};
+  double clear_depth_ = 1;
+
+  // Current values and arrays
+  glm::dvec3 normal_{0, 0, 1};
+  glm::dvec4 color_{1, 1, 1, 1};
+  ClientArray vertex_array_{false, 4, GL_FLOAT, 0, nullptr}, normal_array_{false, 3, GL_FLOAT, 0, nullptr},
+      color_array_{false, 4, GL_FLOAT, 0, nullptr};
+
+  // Lighting constants, rebuilt lazily
+  bool constants_dirty_ = true;
+  lighting::Prepared<float> prepared_f_;
+  lighting::Prepared<double> prepared_d_;
+
+  // The primitive being assembled
+  GLenum prim_mode_ = 0;
+  bool in_begin_ = false;
+  std::vector<raster::Vertex> verts_;
+
+  // Feedback
+  GLenum render_mode_ = GL_RENDER;
+  GLfloat* feedback_ = nullptr;
+  GLsizei feedback_size_ = 0, feedback_count_ = 0;
+  GLenum feedback_type_ = 0;
+  bool feedback_overflow_ = false;
+  GLint pack_alignment_ = 4;
+};
+
+}  // namespace ffc::state

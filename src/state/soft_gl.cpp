@@ -1,0 +1,106 @@
+// The gl* entry points of our context, for the dispatch: each forwards to the current Context.
+#include "state/soft_gl.h"
+
+#include <cstring>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "state/context.h"
+
+namespace ffc::state {
+namespace {
+
+Context* C() { return Context::current(); }
+#define FWD(call) \
+  if (Context* ctx_ = C()) ctx_->call
+
+void APIENTRY ArrayElement(GLint i) { FWD(ArrayElement(i)); }
+void APIENTRY Begin(GLenum m) { FWD(Begin(m)); }
+void APIENTRY Clear(GLbitfield m) { FWD(Clear(m)); }
+void APIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { FWD(ClearColor(r, g, b, a)); }
+void APIENTRY ClearDepth(GLclampd d) { FWD(ClearDepth(d)); }
+void APIENTRY Color3f(GLfloat r, GLfloat g, GLfloat b) { FWD(Color(r, g, b, 1)); }
+void APIENTRY Color3fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], 1)); }
+void APIENTRY Color3ub(GLubyte r, GLubyte g, GLubyte b) { FWD(Color(r / 255.0, g / 255.0, b / 255.0, 1)); }
+void APIENTRY Color4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { FWD(Color(r, g, b, a)); }
+void APIENTRY Color4fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], v[3])); }
+void APIENTRY ColorMaterial(GLenum f, GLenum m) { FWD(ColorMaterial(f, m)); }
+void APIENTRY ColorPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FWD(ColorPointer(s, t, st, p)); }
+void APIENTRY CullFace(GLenum m) { FWD(CullFace(m)); }
+void APIENTRY DepthFunc(GLenum f) { FWD(DepthFunc(f)); }
+void APIENTRY DepthRange(GLclampd n, GLclampd f) { FWD(DepthRange(n, f)); }
+void APIENTRY Disable(GLenum c) { FWD(Disable(c)); }
+void APIENTRY DisableClientState(GLenum a) { FWD(DisableClientState(a)); }
+void APIENTRY DrawArrays(GLenum m, GLint f, GLsizei n) { FWD(DrawArrays(m, f, n)); }
+void APIENTRY DrawElements(GLenum m, GLsizei n, GLenum t, const GLvoid* i) { FWD(DrawElements(m, n, t, i)); }
+void APIENTRY Enable(GLenum c) { FWD(Enable(c)); }
+void APIENTRY EnableClientState(GLenum a) { FWD(EnableClientState(a)); }
+void APIENTRY End() { FWD(End()); }
+void APIENTRY FeedbackBuffer(GLsizei s, GLenum t, GLfloat* b) { FWD(FeedbackBuffer(s, t, b)); }
+void APIENTRY Finish() {}
+void APIENTRY Flush() {}
+void APIENTRY FrontFace(GLenum m) { FWD(FrontFace(m)); }
+void APIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Frustum(l, r, b, t, n, f)); }
+void APIENTRY GetDoublev(GLenum p, GLdouble* v) { FWD(GetDoublev(p, v)); }
+GLenum APIENTRY GetError() { return C() ? C()->GetError() : GL_NO_ERROR; }
+void APIENTRY GetFloatv(GLenum p, GLfloat* v) { FWD(GetFloatv(p, v)); }
+void APIENTRY GetIntegerv(GLenum p, GLint* v) { FWD(GetIntegerv(p, v)); }
+void APIENTRY GetLightfv(GLenum l, GLenum p, GLfloat* v) { FWD(GetLightfv(l, p, v)); }
+void APIENTRY GetMaterialfv(GLenum f, GLenum p, GLfloat* v) { FWD(GetMaterialfv(f, p, v)); }
+const GLubyte* APIENTRY GetString(GLenum n) { return C() ? C()->GetString(n) : nullptr; }
+GLboolean APIENTRY IsEnabled(GLenum c) { return C() ? C()->IsEnabled(c) : GL_FALSE; }
+void APIENTRY LightModelf(GLenum p, GLfloat v) { FWD(LightModelf(p, v)); }
+void APIENTRY LightModelfv(GLenum p, const GLfloat* v) { FWD(LightModelfv(p, v)); }
+void APIENTRY LightModeli(GLenum p, GLint v) { FWD(LightModeli(p, v)); }
+void APIENTRY Lightf(GLenum l, GLenum p, GLfloat v) { FWD(Lightf(l, p, v)); }
+void APIENTRY Lightfv(GLenum l, GLenum p, const GLfloat* v) { FWD(Lightfv(l, p, v)); }
+void APIENTRY Lighti(GLenum l, GLenum p, GLint v) { FWD(Lighti(l, p, v)); }
+void APIENTRY LineWidth(GLfloat w) { FWD(LineWidth(w)); }
+void APIENTRY LoadIdentity() { FWD(LoadIdentity()); }
+void APIENTRY LoadMatrixd(const GLdouble* m) { FWD(LoadMatrix(glm::make_mat4(m))); }
+void APIENTRY LoadMatrixf(const GLfloat* m) { FWD(LoadMatrix(glm::dmat4(glm::make_mat4(m)))); }
+void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { FWD(Materialf(f, p, v)); }
+void APIENTRY Materialfv(GLenum f, GLenum p, const GLfloat* v) { FWD(Materialfv(f, p, v)); }
+void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { FWD(Materiali(f, p, v)); }
+void APIENTRY MatrixMode(GLenum m) { FWD(MatrixMode(m)); }
+void APIENTRY MultMatrixd(const GLdouble* m) { FWD(MultMatrix(glm::make_mat4(m))); }
+void APIENTRY MultMatrixf(const GLfloat* m) { FWD(MultMatrix(glm::dmat4(glm::make_mat4(m)))); }
+void APIENTRY Normal3d(GLdouble x, GLdouble y, GLdouble z) { FWD(Normal(x, y, z)); }
+void APIENTRY Normal3dv(const GLdouble* v) { FWD(Normal(v[0], v[1], v[2])); }
+void APIENTRY Normal3f(GLfloat x, GLfloat y, GLfloat z) { FWD(Normal(x, y, z)); }
+void APIENTRY Normal3fv(const GLfloat* v) { FWD(Normal(v[0], v[1], v[2])); }
+void APIENTRY NormalPointer(GLenum t, GLsizei s, const GLvoid* p) { FWD(NormalPointer(t, s, p)); }
+void APIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Ortho(l, r, b, t, n, f)); }
+void APIENTRY PixelStorei(GLenum p, GLint v) { FWD(PixelStorei(p, v)); }
+void APIENTRY PopMatrix() { FWD(PopMatrix()); }
+void APIENTRY PushMatrix() { FWD(PushMatrix()); }
+void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }
+GLint APIENTRY RenderMode(GLenum m) { return C() ? C()->RenderMode(m) : 0; }
+void APIENTRY Rotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z) { FWD(Rotate(a, x, y, z)); }
+// glRotatef and friends build their matrices from float arguments; the double maths after that
+// differs from Mesa's float maths by rounding only.
+void APIENTRY Rotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { FWD(Rotate(a, x, y, z)); }
+void APIENTRY Scaled(GLdouble x, GLdouble y, GLdouble z) { FWD(Scale(x, y, z)); }
+void APIENTRY Scalef(GLfloat x, GLfloat y, GLfloat z) { FWD(Scale(x, y, z)); }
+void APIENTRY ShadeModel(GLenum m) { FWD(ShadeModel(m)); }
+void APIENTRY Translated(GLdouble x, GLdouble y, GLdouble z) { FWD(Translate(x, y, z)); }
+void APIENTRY Translatef(GLfloat x, GLfloat y, GLfloat z) { FWD(Translate(x, y, z)); }
+void APIENTRY Vertex2f(GLfloat x, GLfloat y) { FWD(Vertex(x, y, 0, 1)); }
+void APIENTRY Vertex3d(GLdouble x, GLdouble y, GLdouble z) { FWD(Vertex(x, y, z, 1)); }
+void APIENTRY Vertex3dv(const GLdouble* v) { FWD(Vertex(v[0], v[1], v[2], 1)); }
+void APIENTRY Vertex3f(GLfloat x, GLfloat y, GLfloat z) { FWD(Vertex(x, y, z, 1)); }
+void APIENTRY Vertex3fv(const GLfloat* v) { FWD(Vertex(v[0], v[1], v[2], 1)); }
+void APIENTRY VertexPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FWD(VertexPointer(s, t, st, p)); }
+void APIENTRY Viewport(GLint x, GLint y, GLsizei w, GLsizei h) { FWD(Viewport(x, y, w, h)); }
+#undef FWD
+
+}  // namespace
+
+void* proc_address(const char* name) {
+#define FFC_GL_FUNCTION(ret, fn, params) \
+  if (std::strcmp(name, "gl" #fn) == 0) return reinterpret_cast<void*>(&fn);
+#include "gl/gl_functions.inc"
+#undef FFC_GL_FUNCTION
+  return nullptr;
+}
+
+}  // namespace ffc::state
