@@ -55,7 +55,7 @@ int render_headless(const Example& ex, const Options& opt) {
   const image::Image img = backend->read();
   image::write_png(opt.out, img);
   if (opt.json)
-    std::cout << nlohmann::json{{"example", ex.name}, {"out", opt.out}, {"width", img.width},
+    std::cout << nlohmann::ordered_json{{"example", ex.name}, {"out", opt.out}, {"width", img.width},
                                 {"height", img.height}, {"backend", backend->name()}}
                      .dump()
               << std::endl;
@@ -94,13 +94,18 @@ int run_window(const Example& ex, const Options& opt) {
   glfwSetWindowUserPointer(window, const_cast<Example*>(&ex));
   glfwSetKeyCallback(window, on_glfw_key);
   glfwSwapInterval(1);
-  for (int frame = 0; !glfwWindowShouldClose(window) && (opt.frames <= 0 || frame < opt.frames); ++frame) {
-    glfwPollEvents();
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window, &w, &h);
-    glViewport(0, 0, w, h);
-    ex.draw(w, h);
-    glfwSwapBuffers(window);
+  try {
+    for (int frame = 0; !glfwWindowShouldClose(window) && (opt.frames <= 0 || frame < opt.frames); ++frame) {
+      glfwPollEvents();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      glViewport(0, 0, w, h);
+      ex.draw(w, h);
+      glfwSwapBuffers(window);
+    }
+  } catch (...) {
+    glfwTerminate();  // close the window before run_example reports the error
+    throw;
   }
   glfwTerminate();
   return 0;

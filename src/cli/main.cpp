@@ -3,6 +3,10 @@
 
 #include "cli/common.h"
 
+namespace ffc::cli {
+void add_check(CLI::App& app);  // check.cpp
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"ffcompat: legacy OpenGL fixed-function lighting, rendered and checked against Mesa"};
   app.require_subcommand(1);
@@ -10,6 +14,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_normals(app);
   ffc::cli::add_compare(app);
   ffc::cli::add_shading(app);
+  ffc::cli::add_check(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -165,7 +165,7 @@ void Context::Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
   if (!outside_begin_end()) return;
   const int i = light_index(light), n = light_param_count(pname);
   if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
-  double v[4];
+  double v[4] = {0, 0, 0, 0};
   for (int k = 0; k < n; ++k) v[k] = params[k];
   const double x = v[0];
   if (pname == GL_SPOT_EXPONENT && !(x >= 0 && x <= 128)) return error(GL_INVALID_VALUE);
@@ -589,6 +589,14 @@ lighting::Key Context::key() const {
 void Context::prepare_lighting() {
   lighting::ModelParams m = model_;
   m.color_material = color_material_;
+  const bool any_light = key().bits & 0xFF;
+  if (any_light && model_.separate_specular)
+    deviations_.insert("feedback reports only the primary colour under GL_SEPARATE_SPECULAR_COLOR");
+  if (any_light && model_.two_side && color_material_ && cm_face_ != GL_FRONT)
+    deviations_.insert("two-sided lighting with a GL_BACK colour material is broken in Mesa 22.3");
+  if (any_light && (model_.two_side || color_material_) &&
+      (materials_[0].shininess == 0 || (model_.two_side && materials_[1].shininess == 0)))
+    deviations_.insert("shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1");
   if (precision_ == Precision::Float)
     prepared_f_ = lighting::prepare<float>(lights_, materials_, m, key());
   else
@@ -632,6 +640,7 @@ void Context::process_vertex(const glm::dvec4& obj) {
     if (normalize_) {
       const double len = glm::length(n);
       if (len > 0) n /= len;  // a zero normal stays zero: ambient and emission only
+      else deviations_.insert("zero-length normal under GL_NORMALIZE: only ambient and emission remain");
     } else if (rescale_normal_) {
       const double f = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
       if (f > 0) n /= f;

@@ -10,6 +10,8 @@
 
 #include <array>
 #include <glm/glm.hpp>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "lighting/lighting.h"
@@ -105,6 +107,9 @@ class Context {
   lighting::Key key() const;
   const lighting::LightParams& light(int i) const { return lights_[i]; }
   const lighting::MaterialParams& material(int face) const { return materials_[face]; }
+  // Places where Mesa 22.3 is known to depart from the spec, met while drawing (the checker reports
+  // them instead of calling their differences passes or failures).
+  const std::set<std::string>& deviations() const { return deviations_; }
 
  private:
   void error(GLenum e) {
@@ -168,6 +173,7 @@ class Context {
   GLenum feedback_type_ = 0;
   bool feedback_overflow_ = false;
   GLint pack_alignment_ = 4;
+  std::set<std::string> deviations_;
 };
 
 }  // namespace ffc::state
