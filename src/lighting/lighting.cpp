@@ -1,6 +1,8 @@
 #include "lighting/lighting.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 
 namespace ffc::lighting {
@@ -68,22 +70,44 @@ Prepared<T> prepare(const LightParams (&lights)[8], const MaterialParams (&mat)[
   return c;
 }
 
-template <typename T>
-Lit<T> light(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, const V4<T>& color) {
+// Runtime shape: every choice read from the key and the lights (the generic kernel).
+struct RuntimeShape {
+  static bool two_side(const Key& k) { return k.two_side(); }
+  static bool local_viewer(const Key& k) { return k.local_viewer(); }
+  static bool specular(const Key& k) { return k.specular(); }
+  static bool color_material(const Key& k) { return k.color_material(); }
+  static bool separate_specular(const Key& k) { return k.separate_specular(); }
+  static bool simple_lights() { return false; }
+};
+
+// Compile-time shape: the terms a key leaves out are not in the code at all. Simple lights are
+// directional without spot: L and (with an infinite viewer) h are per-light constants.
+template <bool TwoSide, bool LocalViewer, bool Specular, bool ColorMaterial, bool Separate, bool Simple>
+struct StaticShape {
+  static constexpr bool two_side(const Key&) { return TwoSide; }
+  static constexpr bool local_viewer(const Key&) { return LocalViewer; }
+  static constexpr bool specular(const Key&) { return Specular; }
+  static constexpr bool color_material(const Key&) { return ColorMaterial; }
+  static constexpr bool separate_specular(const Key&) { return Separate; }
+  static constexpr bool simple_lights() { return Simple; }
+};
+
+template <typename T, typename S>
+inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, const V4<T>& color) {
   const Key& key = c.key;
   const V3<T> p = (p4.w != 0 && p4.w != 1) ? V3<T>(p4) / p4.w : V3<T>(p4);
   const V3<T> cm = V3<T>(color);
   // The eye direction for a local viewer: from the vertex toward the origin of eye space.
   V3<T> to_eye(0, 0, 1);
-  if (key.local_viewer()) {
+  if (S::local_viewer(key)) {
     const T len = glm::length(p);
     to_eye = len > 0 ? -p / len : V3<T>(0);
   }
   Lit<T> out;
-  const int faces = key.two_side() ? 2 : 1;
+  const int faces = S::two_side(key) ? 2 : 1;
   for (int f = 0; f < faces; ++f) {
     const V3<T> nf = f == 0 ? n : -n;
-    const bool cm_on = key.color_material() && (c.model.cm_faces >> f & 1);
+    const bool cm_on = S::color_material(key) && (c.model.cm_faces >> f & 1);
     V3<T> prim = c.scene[f], sec(0);
     T alpha = c.alpha[f];
     bool track_amb = false, track_dif = false, track_spe = false;
@@ -99,13 +123,13 @@ Lit<T> light(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, const V4<T>&
       const PreparedLight<T>& L = c.light[i];
       V3<T> vp = L.pos;
       T att = 1;
-      if (L.local) {
+      if (!S::simple_lights() && L.local) {
         const V3<T> d = L.pos - p;
         const T dist = glm::length(d);
         vp = dist > 0 ? d / dist : V3<T>(0);
         if (L.attenuated) att = T(1) / (L.k0 + L.k1 * dist + L.k2 * dist * dist);
       }
-      if (L.spot) {
+      if (!S::simple_lights() && L.spot) {
         const T cos_angle = glm::dot(-vp, L.spot_dir);
         if (cos_angle < L.spot_cos) continue;  // outside the cone: no contribution at all
         att *= std::pow(std::max(cos_angle, T(0)), L.spot_exp);
@@ -114,16 +138,16 @@ Lit<T> light(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, const V4<T>&
       const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];
       const T ndotl = glm::dot(nf, vp);
       V3<T> sum = amb + std::max(ndotl, T(0)) * dif;
-      if (ndotl > 0 && key.specular()) {
+      if (S::specular(key) && ndotl > 0) {
         V3<T> h = L.half;
-        if (L.local || key.local_viewer()) {
+        if (S::local_viewer(key) || (!S::simple_lights() && L.local)) {
           h = vp + to_eye;
           const T hl = glm::length(h);
           h = hl > 0 ? h / hl : V3<T>(0);
         }
         const V3<T> spe = track_spe ? L.ls * cm : L.spe[f];
         const V3<T> s = std::pow(std::max(glm::dot(nf, h), T(0)), c.shininess[f]) * spe;
-        if (key.separate_specular())
+        if (S::separate_specular(key))
           sec += att * s;
         else
           sum += s;
@@ -137,9 +161,58 @@ Lit<T> light(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, const V4<T>&
   return out;
 }
 
+template <typename T>
+Lit<T> light(const Prepared<T>& c, const V4<T>& p, const V3<T>& n, const V4<T>& color) {
+  return light_impl<T, RuntimeShape>(c, p, n, color);
+}
+
+namespace {
+
+template <typename T, typename S>
+void batch(const Prepared<T>& c, const V4<T>* p, const V3<T>* n, const V4<T>* color, size_t count, Lit<T>* out) {
+  for (size_t i = 0; i < count; ++i) out[i] = light_impl<T, S>(c, p[i], n[i], color[i]);
+}
+
+// Shape index: bit 0 two-sided, 1 local viewer, 2 specular, 3 colour material, 4 separate
+// specular, 5 simple lights. Every combination is instantiated once, at compile time.
+template <typename T, unsigned I>
+constexpr Kernel<T> instance() {
+  return &batch<T, StaticShape<(I & 1) != 0, (I & 2) != 0, (I & 4) != 0, (I & 8) != 0, (I & 16) != 0, (I & 32) != 0>>;
+}
+
+template <typename T, unsigned... I>
+constexpr std::array<Kernel<T>, sizeof...(I)> table(std::integer_sequence<unsigned, I...>) {
+  return {instance<T, I>()...};
+}
+
+}  // namespace
+
+unsigned shape_index(const Key& k) {
+  bool simple = true;
+  for (int i = 0; i < 8; ++i)
+    if (k.enabled(i) && (k.local(i) || k.spot(i))) simple = false;
+  return unsigned(k.two_side()) | unsigned(k.local_viewer()) << 1 | unsigned(k.specular()) << 2 |
+         unsigned(k.color_material()) << 3 | unsigned(k.separate_specular()) << 4 | unsigned(simple) << 5;
+}
+
+template <typename T>
+Kernel<T> specialised(const Key& key) {
+  static constexpr auto kernels = table<T>(std::make_integer_sequence<unsigned, 64>());
+  return kernels[shape_index(key)];
+}
+
+template <typename T>
+Kernel<T> generic() {
+  return &batch<T, RuntimeShape>;
+}
+
 template Prepared<float> prepare(const LightParams (&)[8], const MaterialParams (&)[2], const ModelParams&, Key);
 template Prepared<double> prepare(const LightParams (&)[8], const MaterialParams (&)[2], const ModelParams&, Key);
 template Lit<float> light(const Prepared<float>&, const V4<float>&, const V3<float>&, const V4<float>&);
 template Lit<double> light(const Prepared<double>&, const V4<double>&, const V3<double>&, const V4<double>&);
+template Kernel<float> specialised<float>(const Key&);
+template Kernel<double> specialised<double>(const Key&);
+template Kernel<float> generic<float>();
+template Kernel<double> generic<double>();
 
 }  // namespace ffc::lighting

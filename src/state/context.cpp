@@ -597,10 +597,15 @@ void Context::prepare_lighting() {
   if (any_light && (model_.two_side || color_material_) &&
       (materials_[0].shininess == 0 || (model_.two_side && materials_[1].shininess == 0)))
     deviations_.insert("shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1");
-  if (precision_ == Precision::Float)
-    prepared_f_ = lighting::prepare<float>(lights_, materials_, m, key());
-  else
-    prepared_d_ = lighting::prepare<double>(lights_, materials_, m, key());
+  // "Constants changed" re-prepares; the kernel for the pipeline's shape comes from the key.
+  const lighting::Key k = key();
+  if (precision_ == Precision::Float) {
+    prepared_f_ = lighting::prepare<float>(lights_, materials_, m, k);
+    kernel_f_ = lighting::specialised<float>(k);
+  } else {
+    prepared_d_ = lighting::prepare<double>(lights_, materials_, m, k);
+    kernel_d_ = lighting::specialised<double>(k);
+  }
   constants_dirty_ = false;
 }
 
@@ -635,7 +640,11 @@ void Context::process_vertex(const glm::dvec4& obj) {
   } else {
     if (constants_dirty_) prepare_lighting();
     // Normals transform by the inverse transpose of the modelview's upper 3x3.
-    const glm::dmat3 inv = glm::inverse(glm::dmat3(mv));
+    if (mv != normal_matrix_of_) {  // the inverse is per modelview, not per vertex
+      normal_matrix_of_ = mv;
+      normal_matrix_ = glm::inverse(glm::dmat3(mv));
+    }
+    const glm::dmat3& inv = normal_matrix_;
     glm::dvec3 n = normal_ * inv;  // row vector times M^-1
     if (normalize_) {
       const double len = glm::length(n);
@@ -646,11 +655,15 @@ void Context::process_vertex(const glm::dvec4& obj) {
       if (f > 0) n /= f;
     }
     if (precision_ == Precision::Float) {
-      const auto lit = lighting::light<float>(prepared_f_, glm::vec4(eye), glm::vec3(n), glm::vec4(color_));
+      const glm::vec4 pf(eye), cf(color_);
+      const glm::vec3 nf(n);
+      lighting::Lit<float> lit;
+      kernel_f_(prepared_f_, &pf, &nf, &cf, 1, &lit);
       v.front = lit.primary[0], v.back = lit.primary[1];
       v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
     } else {
-      const auto lit = lighting::light<double>(prepared_d_, eye, n, color_);
+      lighting::Lit<double> lit;
+      kernel_d_(prepared_d_, &eye, &n, &color_, 1, &lit);
       v.front = lit.primary[0], v.back = lit.primary[1];
       v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
     }

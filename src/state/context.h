@@ -160,6 +160,10 @@ class Context {
   bool constants_dirty_ = true;
   lighting::Prepared<float> prepared_f_;
   lighting::Prepared<double> prepared_d_;
+  lighting::Kernel<float> kernel_f_ = nullptr;
+  lighting::Kernel<double> kernel_d_ = nullptr;
+  glm::dmat4 normal_matrix_of_{0.0};  // the modelview normal_matrix_ was computed for
+  glm::dmat3 normal_matrix_{1.0};
 
   // The primitive being assembled
   GLenum prim_mode_ = 0;
