@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace ffc::raster {
 
@@ -123,62 +124,128 @@ void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c
   for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k]);
 }
 
-// Snapped to 1/256 pixel, as llvmpipe's 8 subpixel bits.
+// Snapped to 1/256 pixel, as llvmpipe's 8 subpixel bits; nearbyint rounds half to even.
 int64_t snap(double v) { return int64_t(std::nearbyint(v * 256.0)); }
 
-void draw_triangle(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                   const State& s) {
-  int64_t x[3] = {snap(a.pos.x), snap(b.pos.x), snap(c.pos.x)};
-  int64_t y[3] = {snap(a.pos.y), snap(b.pos.y), snap(c.pos.y)};
-  const WindowVertex* v[3] = {&a, &b, &c};
-  int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-  if (area == 0) return;
-  if (area < 0) {  // make it counter-clockwise
-    std::swap(x[1], x[2]), std::swap(y[1], y[2]), std::swap(v[1], v[2]);
-    area = -area;
-  }
-  const int x0 = std::max(0, int(std::min({x[0], x[1], x[2]}) >> 8) - 1);
-  const int x1 = std::min(fb.width - 1, int(std::max({x[0], x[1], x[2]}) >> 8) + 1);
-  const int y0 = std::max(0, int(std::min({y[0], y[1], y[2]}) >> 8) - 1);
-  const int y1 = std::min(fb.height - 1, int(std::max({y[0], y[1], y[2]}) >> 8) + 1);
-  // Edge i runs from vertex i+1 to i+2; a pixel on an edge is inside only for left and bottom
-  // edges (GL window coordinates), so shared edges are drawn once.
-  auto edge = [&](int i, int64_t px, int64_t py) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    return (x[k] - x[j]) * (py - y[j]) - (y[k] - y[j]) * (px - x[j]);
-  };
-  bool inclusive[3];
+// The plane through three (x, y, value) points: value = p0 + p1 x + p2 y.
+void plane(const glm::dvec3 (&pos)[3], const double (&v)[3], double* p) {
+  const double x1 = pos[1].x - pos[0].x, y1 = pos[1].y - pos[0].y;
+  const double x2 = pos[2].x - pos[0].x, y2 = pos[2].y - pos[0].y;
+  const double det = x1 * y2 - x2 * y1;
+  const double d1 = v[1] - v[0], d2 = v[2] - v[0];
+  p[1] = (d1 * y2 - d2 * y1) / det;
+  p[2] = (x1 * d2 - x2 * d1) / det;
+  p[0] = v[0] - p[1] * pos[0].x - p[2] * pos[0].y;
+}
+
+void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows, int band, int bands) {
+  // Edge functions at pixel centres in 1/256 units, stepped incrementally along a row.
+  int64_t a[3], b[3], c[3];
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const int64_t dx = x[k] - x[j], dy = y[k] - y[j];
-    inclusive[i] = dy < 0 || (dy == 0 && dx > 0);  // left edge (going down) or bottom edge
+    a[i] = -(t.y[k] - t.y[j]) * 256;  // per pixel in x
+    b[i] = (t.x[k] - t.x[j]) * 256;   // per pixel in y
+    c[i] = (t.x[k] - t.x[j]) * (128 - t.y[j]) - (t.y[k] - t.y[j]) * (128 - t.x[j]);
   }
-  for (int py = y0; py <= y1; ++py)
-    for (int px = x0; px <= x1; ++px) {
-      const int64_t cx = int64_t(px) * 256 + 128, cy = int64_t(py) * 256 + 128;
+  const int y0 = t.ymin - t.ymin % band_rows;
+  for (int by = y0; by <= t.ymax; by += band_rows) {
+    if ((by / band_rows) % bands != band) continue;
+    for (int py = std::max(by, t.ymin); py <= std::min(by + band_rows - 1, t.ymax); ++py) {
       int64_t e[3];
-      bool in = true;
-      for (int i = 0; i < 3 && in; ++i) {
-        e[i] = edge(i, cx, cy);
-        in = e[i] > 0 || (e[i] == 0 && inclusive[i]);
+      for (int i = 0; i < 3; ++i) e[i] = c[i] + a[i] * t.xmin + b[i] * py;
+      const double cy = py + 0.5;
+      uint8_t* row = &fb.color[size_t(py) * fb.width * 4];
+      uint32_t* zrow = &fb.depth[size_t(py) * fb.width];
+      for (int px = t.xmin; px <= t.xmax; ++px, e[0] += a[0], e[1] += a[1], e[2] += a[2]) {
+        if (!((e[0] > 0 || (e[0] == 0 && t.inclusive[0])) && (e[1] > 0 || (e[1] == 0 && t.inclusive[1])) &&
+              (e[2] > 0 || (e[2] == 0 && t.inclusive[2]))))
+          continue;
+        const double cx = px + 0.5;
+        const double z = t.z[0] + t.z[1] * cx + t.z[2] * cy;
+        if (s.depth_test) {
+          const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
+          if (!depth_pass(s.depth_func, zi, zrow[px])) continue;
+          zrow[px] = zi;
+        }
+        const double w = 1 / (t.inv_w[0] + t.inv_w[1] * cx + t.inv_w[2] * cy);
+        uint8_t* o = row + size_t(px) * 4;
+        for (int k = 0; k < 4; ++k) o[k] = to_unorm8((t.color[k][0] + t.color[k][1] * cx + t.color[k][2] * cy) * w);
       }
-      if (!in) continue;
-      const double l0 = double(e[0]) / area, l1 = double(e[1]) / area, l2 = double(e[2]) / area;
-      const double z = l0 * v[0]->pos.z + l1 * v[1]->pos.z + l2 * v[2]->pos.z;
-      // Perspective-correct colour: interpolate c/w and 1/w.
-      const double w0 = l0 * v[0]->inv_w, w1 = l1 * v[1]->inv_w, w2 = l2 * v[2]->inv_w;
-      const double ws = w0 + w1 + w2;
-      glm::dvec4 col = (w0 * v[0]->color + w1 * v[1]->color + w2 * v[2]->color) / ws;
-      if (s.add_secondary)
-        col += glm::dvec4(glm::dvec3((w0 * v[0]->sec + w1 * v[1]->sec + w2 * v[2]->sec) / ws), 0);
-      write_fragment(fb, px, py, z, col, s);
     }
+  }
 }
 
 }  // namespace
 
+bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& vc, const State& s, Triangle& t) {
+  const WindowVertex* v[3] = {&va, &vb, &vc};
+  for (int i = 0; i < 3; ++i) t.x[i] = snap(v[i]->pos.x), t.y[i] = snap(v[i]->pos.y);
+  t.area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+  if (t.area == 0) return false;
+  if (t.area < 0) {  // make it counter-clockwise
+    std::swap(t.x[1], t.x[2]), std::swap(t.y[1], t.y[2]), std::swap(v[1], v[2]);
+    t.area = -t.area;
+  }
+  for (int i = 0; i < 3; ++i) {
+    // A pixel exactly on an edge belongs to the triangle for left and bottom edges (GL window
+    // coordinates), so a pixel on an edge shared by two triangles is drawn once.
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const int64_t dx = t.x[k] - t.x[j], dy = t.y[k] - t.y[j];
+    t.inclusive[i] = dy < 0 || (dy == 0 && dx > 0);
+  }
+  // Pixel centres (X + 0.5) inside the snapped bounding box.
+  auto lo = [](int64_t v) { return int((v - 128 + 255) >> 8); };  // first centre >= v
+  auto hi = [](int64_t v) { return int((v - 128) >> 8); };        // last centre <= v
+  t.xmin = std::max(0, lo(std::min({t.x[0], t.x[1], t.x[2]})));
+  t.xmax = hi(std::max({t.x[0], t.x[1], t.x[2]}));
+  t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
+  t.ymax = hi(std::max({t.y[0], t.y[1], t.y[2]}));
+  const glm::dvec3 pos[3] = {v[0]->pos, v[1]->pos, v[2]->pos};
+  // Planes from the unsnapped positions; if those are degenerate the snapped ones are not, so
+  // fall back to a flat plane through the first vertex.
+  const double det = (pos[1].x - pos[0].x) * (pos[2].y - pos[0].y) - (pos[2].x - pos[0].x) * (pos[1].y - pos[0].y);
+  auto make = [&](double a, double b, double c, double* p) {
+    if (det == 0) {
+      p[0] = a, p[1] = p[2] = 0;
+      return;
+    }
+    const double vals[3] = {a, b, c};
+    plane(pos, vals, p);
+  };
+  make(v[0]->pos.z, v[1]->pos.z, v[2]->pos.z, t.z);
+  make(v[0]->inv_w, v[1]->inv_w, v[2]->inv_w, t.inv_w);
+  for (int k = 0; k < 4; ++k) {
+    double c[3];
+    for (int i = 0; i < 3; ++i) c[i] = (v[i]->color[k] + (s.add_secondary && k < 3 ? v[i]->sec[k] : 0)) * v[i]->inv_w;
+    make(c[0], c[1], c[2], t.color[k]);
+  }
+  return true;
+}
+
+void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, const State& s, int threads) {
+  constexpr int kBandRows = 16;
+  auto work = [&](int band, int bands) {
+    for (const Triangle& t : tris) {
+      Triangle c = t;  // clip the box to the framebuffer
+      c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
+      c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
+      if (c.xmin <= c.xmax && c.ymin <= c.ymax) rasterize(fb, c, s, kBandRows, band, bands);
+    }
+  };
+  threads = std::max(1, std::min(threads, (fb.height + kBandRows - 1) / kBandRows));
+  if (threads == 1 || tris.size() < 64) return work(0, 1);
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t, threads);
+  work(0, threads);
+  for (auto& th : pool) th.join();
+}
+
 void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const State& s) {
-  for (size_t i = 1; i + 1 < poly.size(); ++i) draw_triangle(fb, poly[0], poly[i], poly[i + 1], s);
+  std::vector<Triangle> tris;
+  Triangle t;
+  for (size_t i = 1; i + 1 < poly.size(); ++i)
+    if (setup(poly[0], poly[i], poly[i + 1], s, t)) tris.push_back(t);
+  draw_triangles(fb, tris, s, 1);
 }
 
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s) {

@@ -51,6 +51,23 @@ struct WindowVertex {
 std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const State& s, const Vertex* provoking,
                                       bool is_line, bool* back_facing = nullptr);
 
+// A triangle set up for rasterization: edges snapped to 1/256 pixel (llvmpipe's 8 subpixel bits),
+// attribute planes from the unsnapped positions, as llvmpipe builds them.
+struct Triangle {
+  int64_t x[3], y[3], area;  // snapped, counter-clockwise
+  bool inclusive[3];         // edge i (from vertex i+1 to i+2) owns the pixels exactly on it
+  int xmin, xmax, ymin, ymax;
+  double z[3], inv_w[3];     // planes: value at pixel centre (X, Y) = p[0] + p[1] X + p[2] Y
+  double color[4][3];        // colour / w, with the secondary colour already summed in
+};
+
+// False when the triangle covers no area once snapped.
+bool setup(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const State& s, Triangle& out);
+
+// Rasterizes in order, rows shared out between `threads` threads in interleaved bands: every pixel
+// is written by one thread, in primitive order, so the picture does not depend on the count.
+void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, const State& s, int threads);
+
 void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const State& s);
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);
