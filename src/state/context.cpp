@@ -759,14 +759,30 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   if (!vertex_array_.enabled || !indices) return;
   prim_mode_ = mode;
   verts_.clear();
+  // Each array element in the indices' range is transformed and lit once, however often the
+  // indices name it (a post-transform cache covering the whole draw).
   const uint8_t* p = static_cast<const uint8_t*>(indices);
-  for (GLsizei i = 0; i < count; ++i) fetch_vertex(GLint(read_component(p, type, i, false)));
+  elements_.resize(size_t(count));
+  uint32_t lo = UINT32_MAX, hi = 0;
+  for (GLsizei i = 0; i < count; ++i) {
+    elements_[i] = uint32_t(read_component(p, type, i, false));
+    lo = std::min(lo, elements_[i]), hi = std::max(hi, elements_[i]);
+  }
+  if (count > 0) {
+    for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i));
+    for (uint32_t& e : elements_) e -= lo;
+  }
   flush_primitive(false);
+  elements_.clear();
 }
 
 // ---------------------------------------------------------------- primitives
 
 void Context::flush_primitive(bool) {
+  if (render_mode_ == GL_SELECT) {  // selection is not modelled: nothing is drawn
+    verts_.clear();
+    return;
+  }
   raster::State rs;
   rs.viewport = viewport_;
   rs.depth_range = depth_range_;
@@ -779,34 +795,16 @@ void Context::flush_primitive(bool) {
   rs.two_side = lighting_ && model_.two_side;
   rs.add_secondary = lighting_ && model_.separate_specular;
   const bool feedback = render_mode_ == GL_FEEDBACK;
-  if (render_mode_ == GL_SELECT) return;  // selection is not modelled: nothing is drawn
+  std::vector<raster::Triangle>& tris = triangles_;
+  tris.clear();
 
-  auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
-    std::vector<raster::Vertex> prim;
-    for (size_t i : idx) prim.push_back(verts_[i]);
-    const bool is_line = kind == GL_LINE_TOKEN, is_point = kind == GL_POINT_TOKEN;
-    if (is_point) prim.push_back(prim[0]);  // a point clips like a degenerate line
-    // Feedback reports each vertex's own colour (Mesa does not flatten there).
-    const auto w = raster::clip_and_map(prim, rs, feedback ? nullptr : &verts_[provoking], is_line || is_point);
-    if (w.empty()) return;
-    if (!feedback) {
-      if (is_point) {
-        std::vector<raster::WindowVertex> pt = {w[0], w[0]};
-        pt[1].pos.x += 1;
-        raster::draw_line(fb_, pt, rs);
-      } else if (is_line) {
-        raster::draw_line(fb_, w, rs);
-      } else {
-        raster::draw_polygon(fb_, w, rs);
-      }
-      return;
-    }
-    auto put = [&](double x) {
-      if (feedback_count_ < feedback_size_) feedback_[feedback_count_] = GLfloat(x);
-      else feedback_overflow_ = true;
-      ++feedback_count_;
-    };
-    const size_t n = is_point ? 1 : w.size();
+  auto put = [&](double x) {
+    if (feedback_count_ < feedback_size_) feedback_[feedback_count_] = GLfloat(x);
+    else feedback_overflow_ = true;
+    ++feedback_count_;
+  };
+  auto emit_feedback = [&](GLenum kind, const std::vector<raster::WindowVertex>& w) {
+    const size_t n = kind == GL_POINT_TOKEN ? 1 : w.size();
     put(kind);
     if (kind == GL_POLYGON_TOKEN) put(double(n));
     for (size_t i = 0; i < n; ++i) {
@@ -822,7 +820,32 @@ void Context::flush_primitive(bool) {
     }
   };
 
-  const size_t n = verts_.size();
+  std::vector<raster::Vertex> prim;
+  auto at = [&](size_t i) -> const raster::Vertex& { return verts_[elements_.empty() ? i : elements_[i]]; };
+  auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+    prim.clear();
+    for (size_t i : idx) prim.push_back(at(i));
+    const bool is_line = kind == GL_LINE_TOKEN, is_point = kind == GL_POINT_TOKEN;
+    if (is_point) prim.push_back(prim[0]);  // a point clips like a degenerate line
+    // Feedback reports each vertex's own colour (Mesa does not flatten there).
+    const auto w = raster::clip_and_map(prim, rs, feedback ? nullptr : &at(provoking), is_line || is_point);
+    if (w.empty()) return;
+    if (feedback) return emit_feedback(kind, w);
+    if (is_point) {
+      std::vector<raster::WindowVertex> pt = {w[0], w[0]};
+      pt[1].pos.x += 1;
+      raster::draw_line(fb_, pt, rs);
+    } else if (is_line) {
+      raster::draw_line(fb_, w, rs);
+    } else {
+      // Triangles are set up now and rasterized together at the end, over the cores.
+      raster::Triangle t;
+      for (size_t i = 1; i + 1 < w.size(); ++i)
+        if (raster::setup(w[0], w[i], w[i + 1], rs, t)) tris.push_back(t);
+    }
+  };
+
+  const size_t n = elements_.empty() ? verts_.size() : elements_.size();
   switch (prim_mode_) {
     case GL_POINTS:
       for (size_t i = 0; i < n; ++i) emit({i}, i, GL_POINT_TOKEN);
@@ -862,6 +885,7 @@ void Context::flush_primitive(bool) {
       for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
       break;
   }
+  if (!tris.empty()) raster::draw_triangles(fb_, tris, rs, threads_);
   verts_.clear();
 }
 

@@ -35,6 +35,7 @@ class Context {
 
   raster::Framebuffer& framebuffer() { return fb_; }
   Precision precision() const { return precision_; }
+  void set_threads(int n) { threads_ = n < 1 ? 1 : n; }  // the rasterizer's; the picture does not change
   static Context* current();
   static void make_current(Context* c);
 
@@ -169,6 +170,9 @@ class Context {
   GLenum prim_mode_ = 0;
   bool in_begin_ = false;
   std::vector<raster::Vertex> verts_;
+  std::vector<uint32_t> elements_;            // glDrawElements: indices into verts_
+  std::vector<raster::Triangle> triangles_;   // set up, waiting for the rasterizer
+  int threads_ = 2;
 
   // Feedback
   GLenum render_mode_ = GL_RENDER;
