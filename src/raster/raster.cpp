@@ -9,7 +9,8 @@ namespace ffc::raster {
 uint8_t to_unorm8(double c) {
   if (!(c > 0)) return 0;  // also NaN
   if (c >= 1) return 255;
-  return uint8_t(std::nearbyint(c * 255.0));  // default rounding mode: half to even
+  // In float, as llvmpipe: 0.3f * 255 is exactly 76.5 in float and goes to even, 76.
+  return uint8_t(std::nearbyint(float(c) * 255.0f));  // default rounding mode: half to even
 }
 
 namespace {
@@ -88,6 +89,19 @@ std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const St
     WindowVertex w;
     w.pos = {(ndc.x + 1) * 0.5 * vp[2] + vp[0], (ndc.y + 1) * 0.5 * vp[3] + vp[1],
              (ndc.z * (s.depth_range.y - s.depth_range.x) + (s.depth_range.y + s.depth_range.x)) * 0.5};
+    if (s.float_window) {
+      const float fiw = 1.0f / float(v.clip.w);
+      const float nx = float(v.clip.x) * fiw, ny = float(v.clip.y) * fiw, nz = float(v.clip.z) * fiw;
+      const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
+      const float x = std::fma(nx, hw, float(vp[0]) + hw);
+      const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
+      const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
+      w.pos = {x, double(float(s.fb_height) - y_down), std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f)};
+      // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
+      w.snapped = true;
+      w.sx = int64_t(std::nearbyint((x - 0.5f) * 256.0f)) + 128;
+      w.sy = int64_t(s.fb_height - 1) * 256 - int64_t(std::nearbyint((y_down - 0.5f) * 256.0f)) + 128;
+    }
     const bool use_back = back && s.two_side;
     w.color = use_back ? v.c[1] : v.c[0];
     w.sec = use_back ? v.c[3] : v.c[2];
@@ -179,7 +193,10 @@ void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows
 
 bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& vc, const State& s, Triangle& t) {
   const WindowVertex* v[3] = {&va, &vb, &vc};
-  for (int i = 0; i < 3; ++i) t.x[i] = snap(v[i]->pos.x), t.y[i] = snap(v[i]->pos.y);
+  for (int i = 0; i < 3; ++i) {
+    t.x[i] = v[i]->snapped ? v[i]->sx : snap(v[i]->pos.x);
+    t.y[i] = v[i]->snapped ? v[i]->sy : snap(v[i]->pos.y);
+  }
   t.area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
   if (t.area == 0) return false;
   if (t.area < 0) {  // make it counter-clockwise

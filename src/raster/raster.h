@@ -34,6 +34,10 @@ struct State {
   GLenum cull_mode = GL_BACK, front_face = GL_CCW;
   bool two_side = false;      // lighting on with two-sided model: back faces take the back colour
   bool add_secondary = false; // separate specular: colour sum after interpolation
+  // Window positions as llvmpipe computes them: float, y flipped to the framebuffer's rows
+  // (fb_height - y) with fused multiply-adds, then snapped there. Off: exact double maths.
+  bool float_window = false;
+  int fb_height = 0;
 };
 
 // A clipped primitive in window coordinates, as feedback reports it.
@@ -42,6 +46,8 @@ struct WindowVertex {
   glm::dvec4 color;  // the colour chosen for the facing
   double inv_w;      // 1 / clip w, for perspective-correct interpolation
   glm::dvec4 sec;
+  bool snapped = false;  // sx, sy hold the position in 1/256 pixel (pixel centres at +128)
+  int64_t sx = 0, sy = 0;
 };
 
 // Clips a polygon (a triangle or a line when size 2) against the view volume and maps it to the

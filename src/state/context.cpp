@@ -1,8 +1,11 @@
 #include "state/context.h"
 
+#include "state/float_matrix.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -55,7 +58,16 @@ const uint8_t* element(const ClientArray& a, GLint i) {
   return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
 }
 
-bool valid_primitive(GLenum m) { return m <= GL_POLYGON; }  // GL_POINTS (0) .. GL_POLYGON (9)
+// Primitive modes: GL_POINTS (0) .. GL_POLYGON (9), and GL 3.2's adjacency modes (0xA..0xD:
+// GL_LINES_ADJACENCY .. GL_TRIANGLE_STRIP_ADJACENCY), which Mesa 22.3's compatibility context
+// accepts without error (GL 2.1 would say GL_INVALID_ENUM). GL_PATCHES (0xE) without a
+// tessellation shader is GL_INVALID_OPERATION in Mesa; anything above, GL_INVALID_ENUM.
+constexpr GLenum kPatches = 0xE;
+bool valid_primitive(GLenum m) { return m < kPatches; }
+GLenum primitive_error(GLenum m) { return m == kPatches ? GL_INVALID_OPERATION : GL_INVALID_ENUM; }
+
+// Mesa's INT_TO_FLOAT (main/macros.h): GLint [-2^31, 2^31-1] onto [-1, 1] as (2i + 1) / (2^32 - 2).
+GLfloat int_to_float(GLint i) { return GLfloat((2.0f * GLfloat(i) + 1.0f) * (1.0f / 4294967294.0)); }
 bool valid_face(GLenum f) { return f == GL_FRONT || f == GL_BACK || f == GL_FRONT_AND_BACK; }
 }  // namespace
 
@@ -97,15 +109,56 @@ bool* Context::capability(GLenum cap) {
   }
 }
 
+namespace {
+// Capabilities and client arrays GL 2.1 knows that this pipeline does not model, with their
+// defaults (GL 2.1 tables 6.x; GL_DITHER and GL_MULTISAMPLE start enabled): glEnable / glDisable /
+// glEnableClientState / glDisableClientState record them and glIsEnabled / glGet report them, as
+// Mesa 22.3's compatibility context does. Imaging-subset capabilities (GL_COLOR_TABLE,
+// GL_CONVOLUTION_1D, GL_HISTOGRAM, ...) are not here: Mesa has no ARB_imaging and rejects them.
+struct OtherEnable {
+  GLenum name;
+  bool initial;
+};
+constexpr OtherEnable kOtherCaps[] = {
+    {GL_ALPHA_TEST, false}, {GL_AUTO_NORMAL, false}, {GL_BLEND, false}, {GL_CLIP_PLANE0, false},
+    {GL_CLIP_PLANE1, false}, {GL_CLIP_PLANE2, false}, {GL_CLIP_PLANE3, false}, {GL_CLIP_PLANE4, false},
+    {GL_CLIP_PLANE5, false}, {GL_CLIP_PLANE0 + 6, false}, {GL_CLIP_PLANE0 + 7, false}, {GL_COLOR_LOGIC_OP, false},
+    {GL_COLOR_SUM, false}, {GL_DITHER, true}, {GL_FOG, false}, {GL_INDEX_LOGIC_OP, false}, {GL_LINE_SMOOTH, false},
+    {GL_LINE_STIPPLE, false}, {GL_MAP1_COLOR_4, false}, {GL_MAP1_INDEX, false}, {GL_MAP1_NORMAL, false},
+    {GL_MAP1_TEXTURE_COORD_1, false}, {GL_MAP1_TEXTURE_COORD_2, false}, {GL_MAP1_TEXTURE_COORD_3, false},
+    {GL_MAP1_TEXTURE_COORD_4, false}, {GL_MAP1_VERTEX_3, false}, {GL_MAP1_VERTEX_4, false},
+    {GL_MAP2_COLOR_4, false}, {GL_MAP2_INDEX, false}, {GL_MAP2_NORMAL, false}, {GL_MAP2_TEXTURE_COORD_1, false},
+    {GL_MAP2_TEXTURE_COORD_2, false}, {GL_MAP2_TEXTURE_COORD_3, false}, {GL_MAP2_TEXTURE_COORD_4, false},
+    {GL_MAP2_VERTEX_3, false}, {GL_MAP2_VERTEX_4, false}, {GL_MULTISAMPLE, true}, {GL_POINT_SMOOTH, false},
+    {GL_POINT_SPRITE, false}, {GL_POLYGON_OFFSET_FILL, false}, {GL_POLYGON_OFFSET_LINE, false},
+    {GL_POLYGON_OFFSET_POINT, false}, {GL_POLYGON_SMOOTH, false}, {GL_POLYGON_STIPPLE, false},
+    {GL_SAMPLE_ALPHA_TO_COVERAGE, false}, {GL_SAMPLE_ALPHA_TO_ONE, false}, {GL_SAMPLE_COVERAGE, false},
+    {GL_SCISSOR_TEST, false}, {GL_STENCIL_TEST, false}, {GL_TEXTURE_1D, false}, {GL_TEXTURE_2D, false},
+    {GL_TEXTURE_3D, false}, {GL_TEXTURE_CUBE_MAP, false}, {GL_TEXTURE_GEN_S, false}, {GL_TEXTURE_GEN_T, false},
+    {GL_TEXTURE_GEN_R, false}, {GL_TEXTURE_GEN_Q, false}, {GL_VERTEX_PROGRAM_POINT_SIZE, false},
+    {GL_VERTEX_PROGRAM_TWO_SIDE, false}};
+constexpr OtherEnable kOtherArrays[] = {{GL_TEXTURE_COORD_ARRAY, false}, {GL_INDEX_ARRAY, false},
+                                        {GL_EDGE_FLAG_ARRAY, false}, {GL_FOG_COORD_ARRAY, false},
+                                        {GL_SECONDARY_COLOR_ARRAY, false}};
+
+template <size_t N>
+const OtherEnable* find_enable(const OtherEnable (&table)[N], GLenum name) {
+  for (const OtherEnable& e : table)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+}  // namespace
+
 void Context::set_enabled(GLenum cap, bool on) {
   if (!outside_begin_end()) return;
+  // Mesa's glEnable / glDisable also take the client arrays, as glEnableClientState does (GL 2.1:
+  // GL_INVALID_ENUM).
+  if (cap == GL_VERTEX_ARRAY || cap == GL_NORMAL_ARRAY || cap == GL_COLOR_ARRAY || find_enable(kOtherArrays, cap))
+    return set_client_state(cap, on);
   bool* c = capability(cap);
   if (!c) {
-    // Capabilities GL knows but this pipeline does not model are accepted and ignored.
-    static const GLenum known[] = {GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH,
-                                   GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_ALPHA_TEST, GL_FOG, GL_TEXTURE_2D,
-                                   GL_MULTISAMPLE, GL_POLYGON_OFFSET_FILL, GL_LINE_STIPPLE};
-    if (std::find(std::begin(known), std::end(known), cap) == std::end(known)) error(GL_INVALID_ENUM);
+    if (find_enable(kOtherCaps, cap)) other_enables_[cap] = on;  // accepted, recorded, not modelled
+    else error(GL_INVALID_ENUM);
     return;
   }
   *c = on;
@@ -113,29 +166,36 @@ void Context::set_enabled(GLenum cap, bool on) {
   if (cap == GL_COLOR_MATERIAL && on) Color(color_.r, color_.g, color_.b, color_.a);  // tracks at once
 }
 
-GLboolean Context::IsEnabled(GLenum cap) {
-  if (!outside_begin_end()) return GL_FALSE;
+int Context::enabled_state(GLenum cap) {
   switch (cap) {
     case GL_VERTEX_ARRAY: return vertex_array_.enabled;
     case GL_NORMAL_ARRAY: return normal_array_.enabled;
     case GL_COLOR_ARRAY: return color_array_.enabled;
   }
-  bool* c = capability(cap);
-  if (!c) {
-    error(GL_INVALID_ENUM);
-    return GL_FALSE;
-  }
-  return *c;
+  if (bool* c = capability(cap)) return *c;
+  const OtherEnable* o = find_enable(kOtherCaps, cap);
+  if (!o) o = find_enable(kOtherArrays, cap);
+  if (!o) return -1;
+  const auto it = other_enables_.find(cap);
+  return it != other_enables_.end() ? it->second : o->initial;
+}
+
+GLboolean Context::IsEnabled(GLenum cap) {
+  if (!outside_begin_end()) return GL_FALSE;
+  const int on = enabled_state(cap);
+  if (on < 0) return error(GL_INVALID_ENUM), GL_FALSE;
+  return GLboolean(on);
 }
 
 void Context::set_client_state(GLenum array, bool on) {
+  if (!outside_begin_end()) return;
   ClientArray* a = array == GL_VERTEX_ARRAY   ? &vertex_array_
                    : array == GL_NORMAL_ARRAY ? &normal_array_
                    : array == GL_COLOR_ARRAY  ? &color_array_
                                               : nullptr;
   if (!a) {
-    static const GLenum known[] = {GL_TEXTURE_COORD_ARRAY, GL_INDEX_ARRAY, GL_EDGE_FLAG_ARRAY};
-    if (std::find(std::begin(known), std::end(known), array) == std::end(known)) error(GL_INVALID_ENUM);
+    if (find_enable(kOtherArrays, array)) other_enables_[array] = on;
+    else error(GL_INVALID_ENUM);
     return;
   }
   a->enabled = on;
@@ -167,21 +227,22 @@ void Context::Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
   if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
   double v[4] = {0, 0, 0, 0};
   for (int k = 0; k < n; ++k) v[k] = params[k];
+  // Mesa's tests, as written in its light.c: a NaN passes all of them (GL 2.1 does not say).
   const double x = v[0];
-  if (pname == GL_SPOT_EXPONENT && !(x >= 0 && x <= 128)) return error(GL_INVALID_VALUE);
-  if (pname == GL_SPOT_CUTOFF && !((x >= 0 && x <= 90) || x == 180)) return error(GL_INVALID_VALUE);
+  if (pname == GL_SPOT_EXPONENT && (x < 0 || x > 128)) return error(GL_INVALID_VALUE);
+  if (pname == GL_SPOT_CUTOFF && (x < 0 || x > 90) && x != 180) return error(GL_INVALID_VALUE);
   if ((pname == GL_CONSTANT_ATTENUATION || pname == GL_LINEAR_ATTENUATION || pname == GL_QUADRATIC_ATTENUATION) &&
-      !(x >= 0))
+      x < 0)
     return error(GL_INVALID_VALUE);
   set_light(i, pname, v);
 }
 
+// The scalar calls pass (param, 0, 0, 0) to the vector ones, as Mesa's light.c does: a vector
+// parameter (GL_AMBIENT, GL_POSITION, ...) through glLightf / glLighti is accepted and set, where
+// GL 2.1 says GL_INVALID_ENUM. Likewise glLightModelf / glLightModeli with GL_LIGHT_MODEL_AMBIENT.
 void Context::Lightf(GLenum light, GLenum pname, GLfloat param) {
-  if (light_param_count(pname) > 1) {  // a vector parameter through the scalar call
-    if (outside_begin_end()) error(GL_INVALID_ENUM);
-    return;
-  }
-  Lightfv(light, pname, &param);
+  const GLfloat f[4] = {param, 0, 0, 0};
+  Lightfv(light, pname, f);
 }
 
 void Context::Lightiv(GLenum light, GLenum pname, const GLint* params) {
@@ -189,17 +250,13 @@ void Context::Lightiv(GLenum light, GLenum pname, const GLint* params) {
   GLfloat f[4] = {0, 0, 0, 0};
   const int n = std::max(1, light_param_count(pname));
   const bool color = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
-  for (int k = 0; k < n; ++k) f[k] = color ? GLfloat((2.0 * params[k] + 1) / 4294967295.0) : GLfloat(params[k]);
+  for (int k = 0; k < n; ++k) f[k] = color ? int_to_float(params[k]) : GLfloat(params[k]);
   Lightfv(light, pname, f);
 }
 
 void Context::Lighti(GLenum light, GLenum pname, GLint param) {
-  if (light_param_count(pname) > 1) {
-    if (outside_begin_end()) error(GL_INVALID_ENUM);
-    return;
-  }
-  const GLfloat f = GLfloat(param);
-  Lightfv(light, pname, &f);
+  const GLint i[4] = {param, 0, 0, 0};
+  Lightiv(light, pname, i);
 }
 
 void Context::LightModelfv(GLenum pname, const GLfloat* p) {
@@ -219,14 +276,16 @@ void Context::LightModelfv(GLenum pname, const GLfloat* p) {
 }
 
 void Context::LightModelf(GLenum pname, GLfloat param) {
-  if (pname == GL_LIGHT_MODEL_AMBIENT) {
-    if (outside_begin_end()) error(GL_INVALID_ENUM);
-    return;
-  }
-  LightModelfv(pname, &param);
+  const GLfloat f[4] = {param, 0, 0, 0};
+  LightModelfv(pname, f);
 }
 
-void Context::LightModeli(GLenum pname, GLint param) { LightModelf(pname, GLfloat(param)); }
+void Context::LightModeli(GLenum pname, GLint param) {
+  // As glLightModeliv with (param, 0, 0, 0): the ambient colour maps integers onto [-1, 1].
+  GLfloat f[4] = {GLfloat(param), 0, 0, 0};
+  if (pname == GL_LIGHT_MODEL_AMBIENT) f[0] = int_to_float(param), f[1] = f[2] = f[3] = int_to_float(0);
+  LightModelfv(pname, f);
+}
 
 bool Context::set_material(GLenum face, GLenum pname, const double* v) {
   if (!valid_face(face)) return error(GL_INVALID_ENUM), false;
@@ -234,7 +293,7 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
     case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE:
     case GL_COLOR_INDEXES: break;
     case GL_SHININESS:
-      if (!(v[0] >= 0 && v[0] <= 128)) return error(GL_INVALID_VALUE), false;
+      if (v[0] < 0 || v[0] > 128) return error(GL_INVALID_VALUE), false;  // Mesa's test: a NaN passes
       break;
     default: return error(GL_INVALID_ENUM), false;
   }
@@ -250,6 +309,7 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
       case GL_EMISSION: m.emission = c; break;
       case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = c; break;
       case GL_SHININESS: m.shininess = v[0]; break;
+      case GL_COLOR_INDEXES: color_indexes_[f] = glm::dvec3(v[0], v[1], v[2]); break;
     }
   }
   constants_dirty_ = true;
@@ -265,8 +325,11 @@ void Context::Materialfv(GLenum face, GLenum pname, const GLfloat* params) {
 }
 
 void Context::Materialf(GLenum face, GLenum pname, GLfloat param) {
-  if (pname != GL_SHININESS) return error(GL_INVALID_ENUM);
-  Materialfv(face, pname, &param);
+  // Mesa passes (param, ?, ?, ?) to glMaterialfv whatever the pname, without an error (GL 2.1:
+  // GL_INVALID_ENUM unless GL_SHININESS); ours passes (param, 0, 0, 0). glMateriali converts the
+  // integer directly, colours included.
+  const GLfloat f[4] = {param, 0, 0, 0};
+  Materialfv(face, pname, f);
 }
 
 void Context::Materiali(GLenum face, GLenum pname, GLint param) { Materialf(face, pname, GLfloat(param)); }
@@ -340,7 +403,7 @@ void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
     case GL_SPECULAR: v = m.specular; break;
     case GL_EMISSION: v = m.emission; break;
     case GL_SHININESS: out[0] = GLfloat(m.shininess); return;
-    case GL_COLOR_INDEXES: out[0] = 0, out[1] = 1, out[2] = 1; return;
+    case GL_COLOR_INDEXES: for (int k = 0; k < 3; ++k) out[k] = GLfloat(color_indexes_[face == GL_BACK][k]); return;
     default: return error(GL_INVALID_ENUM);
   }
   for (int k = 0; k < 4; ++k) out[k] = GLfloat(v[k]);
@@ -349,120 +412,127 @@ void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
 // ---------------------------------------------------------------- glGet
 
 namespace {
-struct GetValue {
-  double v[16];
-  int n = 0;
-  bool color = false;  // converts to integers as GL colours do
-};
+// Mesa's FLOAT_TO_INT (main/macros.h) on the float Mesa stores: (GLint)(2147483647.0 * x),
+// truncated, unclamped; out of range the x86-64 conversion (cvttsd2si) gives INT_MIN.
+GLint float_to_int(double x) {
+  const double d = 2147483647.0 * double(float(x));
+  if (!(d > -2147483649.0 && d < 2147483648.0)) return std::numeric_limits<GLint>::min();
+  return GLint(d);
+}
 }  // namespace
 
-#define FFC_GET(...)                          \
-  {                                           \
-    const double vals[] = {__VA_ARGS__};      \
-    r.n = int(sizeof vals / sizeof *vals);    \
-    std::copy(vals, vals + r.n, r.v);         \
-  }                                           \
-  break
+#define FFC_GET(...)                               \
+  {                                                \
+    const double vals[] = {__VA_ARGS__};           \
+    n = int(sizeof vals / sizeof *vals);           \
+    std::copy(vals, vals + n, out);                \
+  }
 
-void Context::GetDoublev(GLenum pname, GLdouble* out) {
-  if (!outside_begin_end()) return;
-  GetValue r;
+// The one list of glGet values: writes up to 16 values to `out` and returns how many (0 after
+// recording an error). `normalized`: glGetIntegerv maps the value's [-1, 1] onto the integer
+// range (colours, normals, depth range and depth clear value, as GL 2.1 section 6.1.2 says; and
+// the matrices, as Mesa does though the spec says they round: get.c's TYPE_MATRIX uses
+// FLOAT_TO_INT).
+int Context::get_values(GLenum pname, GLdouble* out, bool& normalized) {
+  normalized = false;
+  if (!outside_begin_end()) return 0;
+  int n = 0;
   auto vec4 = [&](const glm::dvec4& c, bool color) {
-    for (int k = 0; k < 4; ++k) r.v[k] = c[k];
-    r.n = 4, r.color = color;
+    for (int k = 0; k < 4; ++k) out[k] = c[k];
+    n = 4, normalized = color;
   };
   auto mat = [&](const glm::dmat4& m) {
-    std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, r.v);
-    r.n = 16;
+    std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
+    n = 16, normalized = true;
   };
   switch (pname) {
     case GL_MODELVIEW_MATRIX: mat(modelview_.back()); break;
     case GL_PROJECTION_MATRIX: mat(projection_.back()); break;
-    case GL_MODELVIEW_STACK_DEPTH: FFC_GET(double(modelview_.size()));
-    case GL_PROJECTION_STACK_DEPTH: FFC_GET(double(projection_.size()));
-    case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth));
-    case GL_MATRIX_MODE: FFC_GET(double(matrix_mode_));
-    case GL_VIEWPORT: FFC_GET(double(viewport_[0]), double(viewport_[1]), double(viewport_[2]), double(viewport_[3]));
-    case GL_DEPTH_RANGE: FFC_GET(depth_range_.x, depth_range_.y);
-    case GL_MAX_LIGHTS: FFC_GET(8.0);
+    case GL_MODELVIEW_STACK_DEPTH: FFC_GET(double(modelview_.size())); break;
+    case GL_PROJECTION_STACK_DEPTH: FFC_GET(double(projection_.size())); break;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth)); break;
+    case GL_MATRIX_MODE: FFC_GET(double(matrix_mode_)); break;
+    case GL_VIEWPORT: FFC_GET(double(viewport_[0]), double(viewport_[1]), double(viewport_[2]), double(viewport_[3])); break;
+    case GL_DEPTH_RANGE: FFC_GET(depth_range_.x, depth_range_.y); normalized = true; break;
+    case GL_MAX_LIGHTS: FFC_GET(8.0); break;
     case GL_LIGHT_MODEL_AMBIENT: vec4(model_.ambient, true); break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: FFC_GET(double(model_.local_viewer));
-    case GL_LIGHT_MODEL_TWO_SIDE: FFC_GET(double(model_.two_side));
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: FFC_GET(double(model_.local_viewer)); break;
+    case GL_LIGHT_MODEL_TWO_SIDE: FFC_GET(double(model_.two_side)); break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
-      FFC_GET(double(model_.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR));
-    case GL_SHADE_MODEL: FFC_GET(double(shade_model_));
-    case GL_COLOR_MATERIAL_FACE: FFC_GET(double(cm_face_));
-    case GL_COLOR_MATERIAL_PARAMETER: FFC_GET(double(cm_mode_));
-    case GL_FRONT_FACE: FFC_GET(double(front_face_));
-    case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_));
-    case GL_DEPTH_FUNC: FFC_GET(double(depth_func_));
+      FFC_GET(double(model_.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR)); break;
+    case GL_SHADE_MODEL: FFC_GET(double(shade_model_)); break;
+    case GL_COLOR_MATERIAL_FACE: FFC_GET(double(cm_face_)); break;
+    case GL_COLOR_MATERIAL_PARAMETER: FFC_GET(double(cm_mode_)); break;
+    case GL_FRONT_FACE: FFC_GET(double(front_face_)); break;
+    case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_)); break;
+    case GL_DEPTH_FUNC: FFC_GET(double(depth_func_)); break;
     case GL_CURRENT_COLOR: vec4(color_, true); break;
-    case GL_CURRENT_NORMAL: FFC_GET(normal_.x, normal_.y, normal_.z);
+    case GL_CURRENT_NORMAL: FFC_GET(normal_.x, normal_.y, normal_.z); normalized = true; break;
     case GL_COLOR_CLEAR_VALUE: vec4(glm::dvec4(clear_color_), true); break;
-    case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_);
-    case GL_LINE_WIDTH: FFC_GET(double(line_width_));
-    case GL_RENDER_MODE: FFC_GET(double(render_mode_));
-    case GL_DEPTH_BITS: FFC_GET(24.0);
-    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: FFC_GET(8.0);
-    case GL_VERTEX_ARRAY_SIZE: FFC_GET(double(vertex_array_.size));
-    case GL_VERTEX_ARRAY_TYPE: FFC_GET(double(vertex_array_.type));
-    case GL_VERTEX_ARRAY_STRIDE: FFC_GET(double(vertex_array_.stride));
-    case GL_NORMAL_ARRAY_TYPE: FFC_GET(double(normal_array_.type));
-    case GL_NORMAL_ARRAY_STRIDE: FFC_GET(double(normal_array_.stride));
-    case GL_COLOR_ARRAY_SIZE: FFC_GET(double(color_array_.size));
-    case GL_COLOR_ARRAY_TYPE: FFC_GET(double(color_array_.type));
-    case GL_COLOR_ARRAY_STRIDE: FFC_GET(double(color_array_.stride));
-    case GL_VERTEX_ARRAY: FFC_GET(double(vertex_array_.enabled));
-    case GL_NORMAL_ARRAY: FFC_GET(double(normal_array_.enabled));
-    case GL_COLOR_ARRAY: FFC_GET(double(color_array_.enabled));
+    case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_); normalized = true; break;
+    case GL_LINE_WIDTH: FFC_GET(double(line_width_)); break;
+    case GL_RENDER_MODE: FFC_GET(double(render_mode_)); break;
+    case GL_DEPTH_BITS: FFC_GET(24.0); break;
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: FFC_GET(8.0); break;
+    case GL_VERTEX_ARRAY_SIZE: FFC_GET(double(vertex_array_.size)); break;
+    case GL_VERTEX_ARRAY_TYPE: FFC_GET(double(vertex_array_.type)); break;
+    case GL_VERTEX_ARRAY_STRIDE: FFC_GET(double(vertex_array_.stride)); break;
+    case GL_NORMAL_ARRAY_TYPE: FFC_GET(double(normal_array_.type)); break;
+    case GL_NORMAL_ARRAY_STRIDE: FFC_GET(double(normal_array_.stride)); break;
+    case GL_COLOR_ARRAY_SIZE: FFC_GET(double(color_array_.size)); break;
+    case GL_COLOR_ARRAY_TYPE: FFC_GET(double(color_array_.type)); break;
+    case GL_COLOR_ARRAY_STRIDE: FFC_GET(double(color_array_.stride)); break;
+    case GL_VERTEX_ARRAY: FFC_GET(double(vertex_array_.enabled)); break;
+    case GL_NORMAL_ARRAY: FFC_GET(double(normal_array_.enabled)); break;
+    case GL_COLOR_ARRAY: FFC_GET(double(color_array_.enabled)); break;
+    case GL_PACK_ALIGNMENT: FFC_GET(double(pack_alignment_)); break;
+    case GL_UNPACK_ALIGNMENT: FFC_GET(double(unpack_alignment_)); break;
+    case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_PACK_ROW_LENGTH: case GL_PACK_IMAGE_HEIGHT:
+    case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS: case GL_PACK_SKIP_IMAGES: case GL_UNPACK_SWAP_BYTES:
+    case GL_UNPACK_LSB_FIRST: case GL_UNPACK_ROW_LENGTH: case GL_UNPACK_IMAGE_HEIGHT: case GL_UNPACK_SKIP_ROWS:
+    case GL_UNPACK_SKIP_PIXELS: case GL_UNPACK_SKIP_IMAGES: {
+      const auto it = pixel_store_.find(pname);
+      FFC_GET(double(it == pixel_store_.end() ? 0 : it->second));
+      break;
+    }
+    case GL_FEEDBACK_BUFFER_SIZE: FFC_GET(double(feedback_size_)); break;
+    case GL_FEEDBACK_BUFFER_TYPE: FFC_GET(double(feedback_type_)); break;
     default: {
-      if (bool* c = capability(pname)) FFC_GET(double(*c));
-      return error(GL_INVALID_ENUM);
+      const int on = enabled_state(pname);  // every capability glIsEnabled knows is also a glGet value
+      if (on < 0) return error(GL_INVALID_ENUM), 0;
+      FFC_GET(double(on));
     }
   }
-  std::copy(r.v, r.v + r.n, out);
+  return n;
 }
 #undef FFC_GET
 
+void Context::GetDoublev(GLenum pname, GLdouble* out) {
+  GLdouble v[16];
+  bool normalized;
+  const int n = get_values(pname, v, normalized);
+  std::copy(v, v + n, out);
+}
+
 void Context::GetFloatv(GLenum pname, GLfloat* out) {
   GLdouble v[16];
-  const GLenum before = error_;
-  GetDoublev(pname, v);
-  if (error_ != before || in_begin_) return;
-  int n = 1;
-  switch (pname) {
-    case GL_MODELVIEW_MATRIX: case GL_PROJECTION_MATRIX: n = 16; break;
-    case GL_VIEWPORT: case GL_LIGHT_MODEL_AMBIENT: case GL_CURRENT_COLOR: case GL_COLOR_CLEAR_VALUE: n = 4; break;
-    case GL_CURRENT_NORMAL: n = 3; break;
-    case GL_DEPTH_RANGE: n = 2; break;
-  }
+  bool normalized;
+  const int n = get_values(pname, v, normalized);
   for (int k = 0; k < n; ++k) out[k] = GLfloat(v[k]);
 }
 
 void Context::GetIntegerv(GLenum pname, GLint* out) {
   GLdouble v[16];
-  const GLenum before = error_;
-  GetDoublev(pname, v);
-  if (error_ != before || in_begin_) return;
-  int n = 1;
-  bool color = false;
-  switch (pname) {
-    case GL_MODELVIEW_MATRIX: case GL_PROJECTION_MATRIX: n = 16; break;
-    case GL_VIEWPORT: n = 4; break;
-    case GL_LIGHT_MODEL_AMBIENT: case GL_CURRENT_COLOR: case GL_COLOR_CLEAR_VALUE: n = 4, color = true; break;
-    case GL_CURRENT_NORMAL: n = 3, color = true; break;
-    case GL_DEPTH_RANGE: n = 2, color = true; break;
-  }
-  for (int k = 0; k < n; ++k) {
-    // Colours, normals and depth ranges map [-1,1] linearly onto the integer range.
-    const double x = color ? std::clamp(v[k], -1.0, 1.0) * 2147483647.0 : v[k];
-    out[k] = GLint(std::lround(x));
-  }
+  bool normalized;
+  const int n = get_values(pname, v, normalized);
+  // Other values round to the nearest integer, halves away from zero (Mesa's IROUND).
+  for (int k = 0; k < n; ++k) out[k] = normalized ? float_to_int(v[k]) : GLint(std::lround(v[k]));
 }
 
 // ---------------------------------------------------------------- matrices
 
 std::vector<glm::dmat4>& Context::stack() { return matrix_mode_ == GL_PROJECTION ? projection_ : modelview_; }
+std::vector<glm::mat4>& Context::stack_f() { return matrix_mode_ == GL_PROJECTION ? projection_f_ : modelview_f_; }
 
 void Context::MatrixMode(GLenum mode) {
   if (!outside_begin_end()) return;
@@ -476,11 +546,13 @@ void Context::LoadIdentity() { LoadMatrix(glm::dmat4(1)); }
 void Context::LoadMatrix(const glm::dmat4& m) {
   if (!outside_begin_end()) return;
   stack().back() = m;
+  stack_f().back() = glm::mat4(m);
 }
 
 void Context::MultMatrix(const glm::dmat4& m) {
   if (!outside_begin_end()) return;
   stack().back() = stack().back() * m;
+  stack_f().back() = fmat::mul(stack_f().back(), glm::mat4(m));
 }
 
 void Context::PushMatrix() {
@@ -488,6 +560,7 @@ void Context::PushMatrix() {
   auto& s = stack();
   if (s.size() >= kMaxStackDepth) return error(GL_STACK_OVERFLOW);
   s.push_back(s.back());
+  stack_f().push_back(stack_f().back());
 }
 
 void Context::PopMatrix() {
@@ -495,30 +568,42 @@ void Context::PopMatrix() {
   auto& s = stack();
   if (s.size() <= 1) return error(GL_STACK_UNDERFLOW);
   s.pop_back();
+  stack_f().pop_back();
 }
 
+// Each transform updates the double matrix exactly and the float one as Mesa's float maths does.
 void Context::Rotate(double angle, double x, double y, double z) {
+  if (!outside_begin_end()) return;
   const double len = std::sqrt(x * x + y * y + z * z);
-  if (len == 0) return MultMatrix(glm::dmat4(1));  // GL leaves the matrix unchanged
-  MultMatrix(glm::rotate(glm::dmat4(1), glm::radians(angle), glm::dvec3(x, y, z) / len));
+  if (len > 0) stack().back() *= glm::rotate(glm::dmat4(1), glm::radians(angle), glm::dvec3(x, y, z) / len);
+  stack_f().back() = fmat::mul(stack_f().back(), fmat::rotation(float(angle), float(x), float(y), float(z)));
 }
 
-void Context::Scale(double x, double y, double z) { MultMatrix(glm::scale(glm::dmat4(1), glm::dvec3(x, y, z))); }
+void Context::Scale(double x, double y, double z) {
+  if (!outside_begin_end()) return;
+  stack().back() *= glm::scale(glm::dmat4(1), glm::dvec3(x, y, z));
+  fmat::scale(stack_f().back(), float(x), float(y), float(z));
+}
 
 void Context::Translate(double x, double y, double z) {
-  MultMatrix(glm::translate(glm::dmat4(1), glm::dvec3(x, y, z)));
+  if (!outside_begin_end()) return;
+  stack().back() *= glm::translate(glm::dmat4(1), glm::dvec3(x, y, z));
+  fmat::translate(stack_f().back(), float(x), float(y), float(z));
 }
 
 void Context::Ortho(double l, double r, double b, double t, double n, double f) {
   if (!outside_begin_end()) return;
   if (l == r || b == t || n == f) return error(GL_INVALID_VALUE);
-  MultMatrix(glm::orthoRH_NO(l, r, b, t, n, f));
+  stack().back() *= glm::orthoRH_NO(l, r, b, t, n, f);
+  stack_f().back() = fmat::mul(stack_f().back(), fmat::ortho(float(l), float(r), float(b), float(t), float(n), float(f)));
 }
 
 void Context::Frustum(double l, double r, double b, double t, double n, double f) {
   if (!outside_begin_end()) return;
   if (n <= 0 || f <= 0 || l == r || b == t || n == f) return error(GL_INVALID_VALUE);
-  MultMatrix(glm::frustumRH_NO(l, r, b, t, n, f));
+  stack().back() *= glm::frustumRH_NO(l, r, b, t, n, f);
+  stack_f().back() =
+      fmat::mul(stack_f().back(), fmat::frustum(float(l), float(r), float(b), float(t), float(n), float(f)));
 }
 
 void Context::Viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
@@ -552,7 +637,7 @@ void Context::Clear(GLbitfield mask) {
 
 void Context::LineWidth(float w) {
   if (!outside_begin_end()) return;
-  if (!(w > 0)) return error(GL_INVALID_VALUE);
+  if (w <= 0) return error(GL_INVALID_VALUE);  // Mesa's test: a NaN passes
   line_width_ = w;
 }
 
@@ -631,9 +716,16 @@ void Context::Color(double r, double g, double b, double a) {
 
 void Context::process_vertex(const glm::dvec4& obj) {
   const glm::dmat4& mv = modelview_.back();
-  const glm::dvec4 eye = mv * obj;
   raster::Vertex v;
-  v.clip = projection_.back() * eye;
+  glm::dvec4 eye;
+  if (precision_ == Precision::Float) {  // positions rounded as Mesa rounds them
+    const glm::vec4 of(obj);
+    v.clip = fmat::transform(mvp_f_, of);
+    eye = fmat::transform(modelview_f_.back(), of);
+  } else {
+    eye = mv * obj;
+    v.clip = projection_.back() * eye;
+  }
   if (!lighting_) {
     v.front = v.back = glm::clamp(color_, 0.0, 1.0);
     v.front_sec = v.back_sec = glm::dvec4(0);
@@ -678,10 +770,11 @@ void Context::Vertex(double x, double y, double z, double w) {
 
 void Context::Begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
-  if (!valid_primitive(mode)) return error(GL_INVALID_ENUM);
+  if (!valid_primitive(mode)) return error(primitive_error(mode));
   in_begin_ = true;
   prim_mode_ = mode;
   verts_.clear();
+  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
 }
 
 void Context::End() {
@@ -690,27 +783,30 @@ void Context::End() {
   flush_primitive(true);
 }
 
+// The array pointers check as Mesa's varray.c does: the stride first, then the type, then the size.
+// A negative stride alone is recorded by Mesa and then the pointer is set all the same (stride -1
+// read back); ours ignores the call, as GL 2.1 section 2.5 says.
 void Context::VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
   if (!outside_begin_end()) return;
-  if (size < 2 || size > 4) return error(GL_INVALID_VALUE);
-  if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) return error(GL_INVALID_ENUM);
   if (stride < 0) return error(GL_INVALID_VALUE);
+  if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) return error(GL_INVALID_ENUM);
+  if (size < 2 || size > 4) return error(GL_INVALID_VALUE);
   vertex_array_ = {vertex_array_.enabled, size, type, stride, p};
 }
 
 void Context::NormalPointer(GLenum type, GLsizei stride, const void* p) {
   if (!outside_begin_end()) return;
+  if (stride < 0) return error(GL_INVALID_VALUE);
   if (type != GL_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE)
     return error(GL_INVALID_ENUM);
-  if (stride < 0) return error(GL_INVALID_VALUE);
   normal_array_ = {normal_array_.enabled, 3, type, stride, p};
 }
 
 void Context::ColorPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
   if (!outside_begin_end()) return;
-  if (size != 3 && size != 4) return error(GL_INVALID_VALUE);
-  if (type_size(type) == 0) return error(GL_INVALID_ENUM);
   if (stride < 0) return error(GL_INVALID_VALUE);
+  if (type_size(type) == 0) return error(GL_INVALID_ENUM);
+  if (size != 3 && size != 4) return error(GL_INVALID_VALUE);
   color_array_ = {color_array_.enabled, size, type, stride, p};
 }
 
@@ -735,30 +831,46 @@ void Context::fetch_vertex(GLint i) {
 }
 
 void Context::ArrayElement(GLint i) {
-  if (i < 0) return error(GL_INVALID_VALUE);
-  if (!in_begin_) return;
+  // GL 2.1 defines no error for a negative index, and Mesa raises none (it reads before the
+  // arrays); ours ignores the call.
+  if (i < 0) return;
+  if (!in_begin_) {
+    // Outside glBegin/glEnd the element still sets the current normal and colour (its vertex has
+    // no effect), as in Mesa.
+    const bool vertex = vertex_array_.enabled;
+    vertex_array_.enabled = false;
+    fetch_vertex(i);
+    vertex_array_.enabled = vertex;
+    return;
+  }
   fetch_vertex(i);
 }
 
+// glDrawArrays and glDrawElements check as Mesa's draw_validate.c does: the count, then the mode,
+// then the index type.
 void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   if (!outside_begin_end()) return;
-  if (!valid_primitive(mode)) return error(GL_INVALID_ENUM);
-  if (count < 0 || first < 0) return error(GL_INVALID_VALUE);
-  if (!vertex_array_.enabled) return;
+  if (count < 0) return error(GL_INVALID_VALUE);
+  if (!valid_primitive(mode)) return error(primitive_error(mode));
+  // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
+  // draws nothing.
+  if (!vertex_array_.enabled || first < 0) return;
   prim_mode_ = mode;
   verts_.clear();
+  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
   for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
   flush_primitive(false);
 }
 
 void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
   if (!outside_begin_end()) return;
-  if (!valid_primitive(mode)) return error(GL_INVALID_ENUM);
   if (count < 0) return error(GL_INVALID_VALUE);
+  if (!valid_primitive(mode)) return error(primitive_error(mode));
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
   if (!vertex_array_.enabled || !indices) return;
   prim_mode_ = mode;
   verts_.clear();
+  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
   // Each array element in the indices' range is transformed and lit once, however often the
   // indices name it (a post-transform cache covering the whole draw).
   const uint8_t* p = static_cast<const uint8_t*>(indices);
@@ -794,6 +906,8 @@ void Context::flush_primitive(bool) {
   rs.front_face = front_face_;
   rs.two_side = lighting_ && model_.two_side;
   rs.add_secondary = lighting_ && model_.separate_specular;
+  rs.float_window = precision_ == Precision::Float;
+  rs.fb_height = fb_.height;
   const bool feedback = render_mode_ == GL_FEEDBACK;
   std::vector<raster::Triangle>& tris = triangles_;
   tris.clear();
@@ -892,19 +1006,25 @@ void Context::flush_primitive(bool) {
 // ---------------------------------------------------------------- feedback and read-back
 
 void Context::FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
+  // Mesa's order (feedback.c): feedback mode, the size, a null buffer, then the type.
   if (!outside_begin_end()) return;
   if (render_mode_ == GL_FEEDBACK) return error(GL_INVALID_OPERATION);
+  if (size < 0) return error(GL_INVALID_VALUE);
+  if (!buffer && size > 0) return error(GL_INVALID_VALUE);
   if (type != GL_2D && type != GL_3D && type != GL_3D_COLOR && type != GL_3D_COLOR_TEXTURE &&
       type != GL_4D_COLOR_TEXTURE)
     return error(GL_INVALID_ENUM);
-  if (size < 0) return error(GL_INVALID_VALUE);
   feedback_ = buffer, feedback_size_ = size, feedback_type_ = type;
 }
 
 GLint Context::RenderMode(GLenum mode) {
   if (!outside_begin_end()) return 0;
   if (mode != GL_RENDER && mode != GL_FEEDBACK && mode != GL_SELECT) return error(GL_INVALID_ENUM), 0;
-  if (mode == GL_FEEDBACK && !feedback_) return error(GL_INVALID_OPERATION), 0;
+  // Feedback needs a buffer of non-zero size; selection a glSelectBuffer, which ours does not
+  // provide. Mesa records GL_INVALID_OPERATION and then switches the mode all the same; ours
+  // stays in its mode, as GL 2.1 section 2.5 says.
+  if (mode == GL_FEEDBACK && feedback_size_ == 0) return error(GL_INVALID_OPERATION), 0;
+  if (mode == GL_SELECT) return error(GL_INVALID_OPERATION), 0;
   GLint result = 0;
   if (render_mode_ == GL_FEEDBACK) result = feedback_overflow_ ? -1 : feedback_count_;
   render_mode_ = mode;
@@ -915,10 +1035,21 @@ GLint Context::RenderMode(GLenum mode) {
 
 void Context::PixelStorei(GLenum pname, GLint param) {
   if (!outside_begin_end()) return;
-  if (pname == GL_PACK_ALIGNMENT || pname == GL_UNPACK_ALIGNMENT) {
-    if (param != 1 && param != 2 && param != 4 && param != 8) return error(GL_INVALID_VALUE);
-    if (pname == GL_PACK_ALIGNMENT) pack_alignment_ = param;
-    return;
+  switch (pname) {
+    case GL_PACK_ALIGNMENT: case GL_UNPACK_ALIGNMENT:
+      if (param != 1 && param != 2 && param != 4 && param != 8) return error(GL_INVALID_VALUE);
+      (pname == GL_PACK_ALIGNMENT ? pack_alignment_ : unpack_alignment_) = param;
+      return;
+    case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_SWAP_BYTES: case GL_UNPACK_LSB_FIRST:
+      pixel_store_[pname] = param != 0;
+      return;
+    case GL_PACK_ROW_LENGTH: case GL_PACK_IMAGE_HEIGHT: case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS:
+    case GL_PACK_SKIP_IMAGES: case GL_UNPACK_ROW_LENGTH: case GL_UNPACK_IMAGE_HEIGHT: case GL_UNPACK_SKIP_ROWS:
+    case GL_UNPACK_SKIP_PIXELS: case GL_UNPACK_SKIP_IMAGES:
+      // Recorded and reported; glReadPixels honours only GL_PACK_ALIGNMENT.
+      if (param < 0) return error(GL_INVALID_VALUE);
+      pixel_store_[pname] = param;
+      return;
   }
   error(GL_INVALID_ENUM);
 }
@@ -944,6 +1075,7 @@ const GLubyte* Context::GetString(GLenum name) {
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>("ffcompat soft (fixed-function)");
     case GL_VERSION: return reinterpret_cast<const GLubyte*>("2.1 ffcompat");
     case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>("");
+    case GL_SHADING_LANGUAGE_VERSION: return reinterpret_cast<const GLubyte*>("1.20");  // GL 2.1's
   }
   error(GL_INVALID_ENUM);
   return nullptr;

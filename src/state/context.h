@@ -10,6 +10,7 @@
 
 #include <array>
 #include <glm/glm.hpp>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -120,7 +121,10 @@ class Context {
   void set_enabled(GLenum cap, bool on);
   void set_client_state(GLenum array, bool on);
   bool* capability(GLenum cap);
+  int enabled_state(GLenum cap);  // 1 or 0 for a capability or client array GL knows; -1 otherwise
+  int get_values(GLenum pname, GLdouble* out, bool& normalized);  // glGet's list; 0 after an error
   std::vector<glm::dmat4>& stack();
+  std::vector<glm::mat4>& stack_f();
   void set_light(int i, GLenum pname, const double* v);
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
   void fetch_vertex(GLint i);  // from the enabled client arrays, as glArrayElement
@@ -135,16 +139,23 @@ class Context {
   // Enables
   bool lighting_ = false, normalize_ = false, rescale_normal_ = false, color_material_ = false;
   bool depth_test_ = false, cull_face_ = false;
+  // Capabilities and client arrays GL knows that the pipeline does not model, by name; missing
+  // ones have their default (context.cpp's table).
+  std::map<GLenum, bool> other_enables_;
   GLenum shade_model_ = GL_SMOOTH, front_face_ = GL_CCW, cull_mode_ = GL_BACK, depth_func_ = GL_LESS;
   GLenum cm_face_ = GL_FRONT_AND_BACK, cm_mode_ = GL_AMBIENT_AND_DIFFUSE;
   lighting::LightParams lights_[8];
   lighting::MaterialParams materials_[2];
+  glm::dvec3 color_indexes_[2] = {{0, 1, 1}, {0, 1, 1}};  // GL_COLOR_INDEXES: stored and reported only
   lighting::ModelParams model_;
   float line_width_ = 1;
 
   // Transform
   GLenum matrix_mode_ = GL_MODELVIEW;
   std::vector<glm::dmat4> modelview_{glm::dmat4(1)}, projection_{glm::dmat4(1)};
+  // The same stacks in float, computed as Mesa computes them (see float_matrix.h).
+  std::vector<glm::mat4> modelview_f_{glm::mat4(1)}, projection_f_{glm::mat4(1)};
+  glm::mat4 mvp_f_{1.0f};  // projection x modelview in float, refreshed as each primitive begins
   static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for both stacks
   glm::ivec4 viewport_;
   glm::dvec2 depth_range_{0, 1};
@@ -178,9 +189,10 @@ class Context {
   GLenum render_mode_ = GL_RENDER;
   GLfloat* feedback_ = nullptr;
   GLsizei feedback_size_ = 0, feedback_count_ = 0;
-  GLenum feedback_type_ = 0;
+  GLenum feedback_type_ = GL_2D;
   bool feedback_overflow_ = false;
-  GLint pack_alignment_ = 4;
+  GLint pack_alignment_ = 4, unpack_alignment_ = 4;
+  std::map<GLenum, GLint> pixel_store_;  // the other glPixelStorei values, recorded and reported (0 by default)
   std::set<std::string> deviations_;
 };
 
