@@ -266,14 +266,28 @@ void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const 
 }
 
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s) {
+  // llvmpipe draws a line as a parallelogram one pixel wide across its major axis, rasterized with
+  // the triangle rules (left and bottom edges inclusive). Along the major axis a pixel belongs to
+  // the line when its centre lies in [start, end): the diamond-exit rule, for thin lines.
+  // Across it, a centre c is inside when c is in [p - 0.5, p + 0.5), that is pixel ceil(p) - 1.
   if (line.size() != 2) return;
   const WindowVertex &a = line[0], &b = line[1];
   const double dx = b.pos.x - a.pos.x, dy = b.pos.y - a.pos.y;
-  const int steps = int(std::ceil(std::max(std::abs(dx), std::abs(dy))));
-  for (int i = 0; i < steps; ++i) {
-    const double t = (i + 0.5) / steps;
-    const glm::dvec3 p = a.pos + (b.pos - a.pos) * t;
-    write_fragment(fb, int(std::floor(p.x)), int(std::floor(p.y)), p.z, a.color + (b.color - a.color) * t, s);
+  const bool x_major = std::abs(dx) >= std::abs(dy);
+  const double a_major = x_major ? a.pos.x : a.pos.y, b_major = x_major ? b.pos.x : b.pos.y;
+  const double d_major = b_major - a_major;
+  if (d_major == 0) return;
+  const double lo = std::min(a_major, b_major), hi = std::max(a_major, b_major);
+  for (int i = int(std::ceil(lo - 0.5)); i + 0.5 < hi; ++i) {
+    const double c = i + 0.5;
+    if (c < lo) continue;
+    const double t = (c - a_major) / d_major;
+    const double minor = x_major ? a.pos.y + dy * t : a.pos.x + dx * t;
+    const int j = int(std::ceil(minor)) - 1;
+    const int px = x_major ? i : j, py = x_major ? j : i;
+    glm::dvec4 col = a.color + (b.color - a.color) * t;
+    if (s.add_secondary) col += glm::dvec4(glm::dvec3(a.sec + (b.sec - a.sec) * t), 0);
+    write_fragment(fb, px, py, a.pos.z + (b.pos.z - a.pos.z) * t, col, s);
   }
 }
 
