@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <emmintrin.h>
 #include <thread>
 
 namespace ffc::raster {
@@ -9,8 +11,10 @@ namespace ffc::raster {
 uint8_t to_unorm8(double c) {
   if (!(c > 0)) return 0;  // also NaN
   if (c >= 1) return 255;
-  // In float, as llvmpipe: 0.3f * 255 is exactly 76.5 in float and goes to even, 76.
-  return uint8_t(std::nearbyint(float(c) * 255.0f));  // default rounding mode: half to even
+  // In float, as llvmpipe: 0.3f * 255 is exactly 76.5 in float and goes to even, 76. Adding and
+  // taking away 1.5 * 2^23 rounds to an integer, half to even, without a library call.
+  const float v = float(c) * 255.0f + 12582912.0f;  // not folded: FP addition is not associative
+  return uint8_t(v - 12582912.0f);
 }
 
 namespace {
@@ -58,6 +62,45 @@ std::vector<ClipVertex> clip(std::vector<ClipVertex> poly, bool is_line) {
 
 }  // namespace
 
+WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
+  const glm::ivec4 vp = s.viewport;
+  WindowVertex w;
+  w.inv_w = 1 / clip.w;
+  if (!s.float_window) {
+    const glm::dvec3 ndc = glm::dvec3(clip) * w.inv_w;
+    w.pos = {(ndc.x + 1) * 0.5 * vp[2] + vp[0], (ndc.y + 1) * 0.5 * vp[3] + vp[1],
+             (ndc.z * (s.depth_range.y - s.depth_range.x) + (s.depth_range.y + s.depth_range.x)) * 0.5};
+    return w;
+  }
+  const float fiw = 1.0f / float(clip.w);
+  const float nx = float(clip.x) * fiw, ny = float(clip.y) * fiw, nz = float(clip.z) * fiw;
+  const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
+  const float x = std::fma(nx, hw, float(vp[0]) + hw);
+  const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
+  const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
+  w.pos = {x, double(float(s.fb_height) - y_down), std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f)};
+  // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
+  w.snapped = true;
+  w.sx = int64_t(std::nearbyint((x - 0.5f) * 256.0f)) + 128;
+  w.sy = int64_t(s.fb_height - 1) * 256 - int64_t(std::nearbyint((y_down - 0.5f) * 256.0f)) + 128;
+  return w;
+}
+
+unsigned outside_planes(const glm::dvec4& c) {
+  return unsigned(c.x > c.w) | unsigned(c.x < -c.w) << 1 | unsigned(c.y > c.w) << 2 | unsigned(c.y < -c.w) << 3 |
+         unsigned(c.z > c.w) << 4 | unsigned(c.z < -c.w) << 5 | unsigned(!(c.w > 0)) << 6;
+}
+
+bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s) {
+  // The sign of the homogeneous determinant is the window orientation whatever the w's signs.
+  const double area = a.x * (b.y * c.w - c.y * b.w) - b.x * (a.y * c.w - c.y * a.w) + c.x * (a.y * b.w - b.y * a.w);
+  return (s.front_face == GL_CCW) != (area > 0);
+}
+
+bool culled(bool back, const State& s) {
+  return s.cull && (s.cull_mode == GL_FRONT_AND_BACK || (s.cull_mode == GL_BACK) == back);
+}
+
 std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const State& s, const Vertex* provoking,
                                       bool is_line, bool* back_facing) {
   std::vector<ClipVertex> cv;
@@ -69,14 +112,8 @@ std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const St
   // Facing is decided before clipping, from the whole primitive, in window orientation.
   bool back = false;
   if (!is_line && prim.size() >= 3) {
-    // The sign of the homogeneous determinant is the window orientation whatever the w's signs.
-    const glm::dmat3 m(glm::dvec3(prim[0].clip.x, prim[0].clip.y, prim[0].clip.w),
-                       glm::dvec3(prim[1].clip.x, prim[1].clip.y, prim[1].clip.w),
-                       glm::dvec3(prim[2].clip.x, prim[2].clip.y, prim[2].clip.w));
-    const double area = glm::determinant(m);
-    const bool ccw = area > 0;
-    back = (s.front_face == GL_CCW) != ccw;
-    if (s.cull && (s.cull_mode == GL_FRONT_AND_BACK || (s.cull_mode == GL_BACK) == back)) return {};
+    back = back_facing_triangle(prim[0].clip, prim[1].clip, prim[2].clip, s);
+    if (culled(back, s)) return {};
   }
   if (back_facing) *back_facing = back;
   const std::vector<ClipVertex> clipped = clip(std::move(cv), is_line);
@@ -84,28 +121,10 @@ std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const St
   out.reserve(clipped.size());
   const glm::ivec4 vp = s.viewport;
   for (const ClipVertex& v : clipped) {
-    const double iw = 1 / v.clip.w;
-    const glm::dvec3 ndc = glm::dvec3(v.clip) * iw;
-    WindowVertex w;
-    w.pos = {(ndc.x + 1) * 0.5 * vp[2] + vp[0], (ndc.y + 1) * 0.5 * vp[3] + vp[1],
-             (ndc.z * (s.depth_range.y - s.depth_range.x) + (s.depth_range.y + s.depth_range.x)) * 0.5};
-    if (s.float_window) {
-      const float fiw = 1.0f / float(v.clip.w);
-      const float nx = float(v.clip.x) * fiw, ny = float(v.clip.y) * fiw, nz = float(v.clip.z) * fiw;
-      const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
-      const float x = std::fma(nx, hw, float(vp[0]) + hw);
-      const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
-      const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
-      w.pos = {x, double(float(s.fb_height) - y_down), std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f)};
-      // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
-      w.snapped = true;
-      w.sx = int64_t(std::nearbyint((x - 0.5f) * 256.0f)) + 128;
-      w.sy = int64_t(s.fb_height - 1) * 256 - int64_t(std::nearbyint((y_down - 0.5f) * 256.0f)) + 128;
-    }
+    WindowVertex w = map_to_window(v.clip, s);
     const bool use_back = back && s.two_side;
     w.color = use_back ? v.c[1] : v.c[0];
     w.sec = use_back ? v.c[3] : v.c[2];
-    w.inv_w = iw;
     out.push_back(w);
   }
   return out;
@@ -152,38 +171,75 @@ void plane(const glm::dvec3 (&pos)[3], const double (&v)[3], double* p) {
   p[0] = v[0] - p[1] * pos[0].x - p[2] * pos[0].y;
 }
 
+// First and last k with e0 + a k >= thr, for k in [lo, hi]; empty when first > last.
+inline void span(int64_t e0, int64_t a, int64_t thr, int& lo, int& hi) {
+  const int64_t need = thr - e0;  // a k >= need
+  if (a > 0) {
+    const int64_t k = need >= 0 ? (need + a - 1) / a : -((-need) / a);
+    lo = int(std::max<int64_t>(lo, k));
+  } else if (a < 0) {
+    const int64_t b = -a, m = -need;  // k <= m / b
+    const int64_t k = m >= 0 ? m / b : -((-m + b - 1) / b);
+    hi = int(std::min<int64_t>(hi, k));
+  } else if (need > 0) {
+    hi = lo - 1;
+  }
+}
+
 void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows, int band, int bands) {
-  // Edge functions at pixel centres in 1/256 units, stepped incrementally along a row.
-  int64_t a[3], b[3], c[3];
+  // Edge functions at pixel centres in 1/256 units. A pixel is inside when every e_i >= thr_i
+  // (0 for inclusive edges, 1 otherwise); each row's span is solved for, not searched.
+  int64_t a[3], b[3], c[3], thr[3];
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     a[i] = -(t.y[k] - t.y[j]) * 256;  // per pixel in x
     b[i] = (t.x[k] - t.x[j]) * 256;   // per pixel in y
     c[i] = (t.x[k] - t.x[j]) * (128 - t.y[j]) - (t.y[k] - t.y[j]) * (128 - t.x[j]);
+    thr[i] = t.inclusive[i] ? 0 : 1;
   }
   const int y0 = t.ymin - t.ymin % band_rows;
   for (int by = y0; by <= t.ymax; by += band_rows) {
     if ((by / band_rows) % bands != band) continue;
     for (int py = std::max(by, t.ymin); py <= std::min(by + band_rows - 1, t.ymax); ++py) {
-      int64_t e[3];
-      for (int i = 0; i < 3; ++i) e[i] = c[i] + a[i] * t.xmin + b[i] * py;
-      const double cy = py + 0.5;
-      uint8_t* row = &fb.color[size_t(py) * fb.width * 4];
-      uint32_t* zrow = &fb.depth[size_t(py) * fb.width];
-      for (int px = t.xmin; px <= t.xmax; ++px, e[0] += a[0], e[1] += a[1], e[2] += a[2]) {
-        if (!((e[0] > 0 || (e[0] == 0 && t.inclusive[0])) && (e[1] > 0 || (e[1] == 0 && t.inclusive[1])) &&
-              (e[2] > 0 || (e[2] == 0 && t.inclusive[2]))))
-          continue;
-        const double cx = px + 0.5;
-        const double z = t.z[0] + t.z[1] * cx + t.z[2] * cy;
+      int lo = t.xmin, hi = t.xmax;
+      if (hi - lo < 24) {  // narrow: step the edges to the span's ends (divisions cost more)
+        int64_t e[3] = {c[0] + b[0] * py + a[0] * lo, c[1] + b[1] * py + a[1] * lo, c[2] + b[2] * py + a[2] * lo};
+        while (lo <= hi && !(e[0] >= thr[0] && e[1] >= thr[1] && e[2] >= thr[2]))
+          ++lo, e[0] += a[0], e[1] += a[1], e[2] += a[2];
+        int64_t f[3] = {e[0] + a[0] * (hi - lo), e[1] + a[1] * (hi - lo), e[2] + a[2] * (hi - lo)};
+        while (hi >= lo && !(f[0] >= thr[0] && f[1] >= thr[1] && f[2] >= thr[2]))
+          --hi, f[0] -= a[0], f[1] -= a[1], f[2] -= a[2];
+      } else {
+        for (int i = 0; i < 3; ++i) span(c[i] + b[i] * py, a[i], thr[i], lo, hi);
+      }
+      if (lo > hi) continue;
+      const double cy = py + 0.5, x0 = lo + 0.5;
+      // Planes stepped along the row; the four channels in one SSE register.
+      double z = t.z[0] + t.z[1] * x0 + t.z[2] * cy;
+      float iw = t.inv_w[0] + t.inv_w[1] * float(x0) + t.inv_w[2] * float(cy);
+      __m128 col = _mm_add_ps(_mm_load_ps(t.c0), _mm_add_ps(_mm_mul_ps(_mm_load_ps(t.cx), _mm_set1_ps(float(x0))),
+                                                            _mm_mul_ps(_mm_load_ps(t.cy), _mm_set1_ps(float(cy)))));
+      const __m128 dcol = _mm_load_ps(t.cx), zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
+      uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
+      uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
+      for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
+        bool pass = true;
         if (s.depth_test) {
           const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
-          if (!depth_pass(s.depth_func, zi, zrow[px])) continue;
-          zrow[px] = zi;
+          pass = depth_pass(s.depth_func, zi, *zp);
+          if (pass) *zp = zi;
         }
-        const double w = 1 / (t.inv_w[0] + t.inv_w[1] * cx + t.inv_w[2] * cy);
-        uint8_t* o = row + size_t(px) * 4;
-        for (int k = 0; k < 4; ++k) o[k] = to_unorm8((t.color[k][0] + t.color[k][1] * cx + t.color[k][2] * cy) * w);
+        if (pass) {
+          // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
+          __m128 c = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
+          c = _mm_min_ps(_mm_max_ps(c, zero), one);
+          const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(c, k255));
+          const __m128i i16 = _mm_packs_epi32(i32, i32);
+          const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
+          std::memcpy(o, &rgba, 4);
+        }
+        z += t.z[1], iw += t.inv_w[1];
+        col = _mm_add_ps(col, dcol);
       }
     }
   }
@@ -230,11 +286,22 @@ bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& v
     plane(pos, vals, p);
   };
   make(v[0]->pos.z, v[1]->pos.z, v[2]->pos.z, t.z);
-  make(v[0]->inv_w, v[1]->inv_w, v[2]->inv_w, t.inv_w);
+  if (s.flat) {  // a constant, as llvmpipe's constant interpolation: no rounding through 1/w
+    t.inv_w[0] = 1, t.inv_w[1] = t.inv_w[2] = 0;
+    for (int k = 0; k < 4; ++k) {
+      t.c0[k] = float(v[0]->color[k] + (s.add_secondary && k < 3 ? v[0]->sec[k] : 0));
+      t.cx[k] = t.cy[k] = 0;
+    }
+    return true;
+  }
+  double p[3];
+  make(v[0]->inv_w, v[1]->inv_w, v[2]->inv_w, p);
+  for (int i = 0; i < 3; ++i) t.inv_w[i] = float(p[i]);
   for (int k = 0; k < 4; ++k) {
     double c[3];
     for (int i = 0; i < 3; ++i) c[i] = (v[i]->color[k] + (s.add_secondary && k < 3 ? v[i]->sec[k] : 0)) * v[i]->inv_w;
-    make(c[0], c[1], c[2], t.color[k]);
+    make(c[0], c[1], c[2], p);
+    t.c0[k] = float(p[0]), t.cx[k] = float(p[1]), t.cy[k] = float(p[2]);
   }
   return true;
 }

@@ -50,6 +50,13 @@ struct WindowVertex {
   int64_t sx = 0, sy = 0;
 };
 
+// A clip-space position in window coordinates (see State::float_window); colours left empty.
+WindowVertex map_to_window(const glm::dvec4& clip, const State& s);
+// Bit i set: outside view-volume plane i (x>w, x<-w, y>w, y<-w, z>w, z<-w, w<=0). 0: inside.
+unsigned outside_planes(const glm::dvec4& clip);
+bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s);
+bool culled(bool back_facing, const State& s);
+
 // Clips a polygon (a triangle or a line when size 2) against the view volume and maps it to the
 // window. Returns the clipped polygon with colours chosen by facing; empty when culled or clipped
 // away. `provoking` is the vertex whose colours a flat primitive takes (it may be outside `prim`:
@@ -63,8 +70,11 @@ struct Triangle {
   int64_t x[3], y[3], area;  // snapped, counter-clockwise
   bool inclusive[3];         // edge i (from vertex i+1 to i+2) owns the pixels exactly on it
   int xmin, xmax, ymin, ymax;
-  double z[3], inv_w[3];     // planes: value at pixel centre (X, Y) = p[0] + p[1] X + p[2] Y
-  double color[4][3];        // colour / w, with the secondary colour already summed in
+  // Planes: value at pixel centre (X, Y) = p0 + px X + py Y. Depth in double (24 bits must
+  // survive), 1/w and colour / w (secondary colour summed in) in float, as llvmpipe's.
+  double z[3];
+  float inv_w[3];
+  alignas(16) float c0[4], cx[4], cy[4];
 };
 
 // False when the triangle covers no area once snapped.

@@ -302,12 +302,20 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
     if (f == 1 && face == GL_FRONT) continue;
     lighting::MaterialParams& m = materials_[f];
     const glm::dvec4 c(v[0], v[1], v[2], v[3]);
+    // While GL_COLOR_MATERIAL is enabled, glMaterial leaves the parameters that track the colour
+    // alone, as Mesa's vbo_Materialfv does (GL 2.1 does not say).
+    const bool face_tracks = color_material_ && (model_.cm_faces >> f & 1);
+    auto set = [&](glm::dvec4& dst, GLenum attr) {
+      const bool tracks = face_tracks && (cm_mode_ == attr || (cm_mode_ == GL_AMBIENT_AND_DIFFUSE &&
+                                                               (attr == GL_AMBIENT || attr == GL_DIFFUSE)));
+      if (!tracks) dst = c;
+    };
     switch (pname) {
-      case GL_AMBIENT: m.ambient = c; break;
-      case GL_DIFFUSE: m.diffuse = c; break;
-      case GL_SPECULAR: m.specular = c; break;
-      case GL_EMISSION: m.emission = c; break;
-      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = c; break;
+      case GL_AMBIENT: set(m.ambient, GL_AMBIENT); break;
+      case GL_DIFFUSE: set(m.diffuse, GL_DIFFUSE); break;
+      case GL_SPECULAR: set(m.specular, GL_SPECULAR); break;
+      case GL_EMISSION: set(m.emission, GL_EMISSION); break;
+      case GL_AMBIENT_AND_DIFFUSE: set(m.ambient, GL_AMBIENT), set(m.diffuse, GL_DIFFUSE); break;
       case GL_SHININESS: m.shininess = v[0]; break;
       case GL_COLOR_INDEXES: color_indexes_[f] = glm::dvec3(v[0], v[1], v[2]); break;
     }
@@ -412,10 +420,10 @@ void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
 // ---------------------------------------------------------------- glGet
 
 namespace {
-// Mesa's FLOAT_TO_INT (main/macros.h) on the float Mesa stores: (GLint)(2147483647.0 * x),
-// truncated, unclamped; out of range the x86-64 conversion (cvttsd2si) gives INT_MIN.
+// Mesa's FLOAT_TO_INT (main/macros.h): (GLint)(2147483647.0 * x), truncated, unclamped; out of
+// range the x86-64 conversion (cvttsd2si) gives INT_MIN.
 GLint float_to_int(double x) {
-  const double d = 2147483647.0 * double(float(x));
+  const double d = 2147483647.0 * x;
   if (!(d > -2147483649.0 && d < 2147483648.0)) return std::numeric_limits<GLint>::min();
   return GLint(d);
 }
@@ -429,21 +437,22 @@ GLint float_to_int(double x) {
   }
 
 // The one list of glGet values: writes up to 16 values to `out` and returns how many (0 after
-// recording an error). `normalized`: glGetIntegerv maps the value's [-1, 1] onto the integer
-// range (colours, normals, depth range and depth clear value, as GL 2.1 section 6.1.2 says; and
-// the matrices, as Mesa does though the spec says they round: get.c's TYPE_MATRIX uses
-// FLOAT_TO_INT).
-int Context::get_values(GLenum pname, GLdouble* out, bool& normalized) {
-  normalized = false;
+// recording an error). `normalized` tells glGetIntegerv how to convert: kRound rounds to the
+// nearest integer; kFromFloat / kFromDouble map the value's [-1, 1] onto the integer range
+// (colours, normals, depth range and depth clear value, as GL 2.1 section 6.1.2 says; and the
+// matrices, as Mesa does though the spec says they round: get.c's TYPE_MATRIX uses FLOAT_TO_INT),
+// from the value as Mesa stores it: a float, or a double for the depth clear value.
+int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
+  normalized = kRound;
   if (!outside_begin_end()) return 0;
   int n = 0;
   auto vec4 = [&](const glm::dvec4& c, bool color) {
     for (int k = 0; k < 4; ++k) out[k] = c[k];
-    n = 4, normalized = color;
+    n = 4, normalized = color ? kFromFloat : kRound;
   };
   auto mat = [&](const glm::dmat4& m) {
     std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
-    n = 16, normalized = true;
+    n = 16, normalized = kFromFloat;
   };
   switch (pname) {
     case GL_MODELVIEW_MATRIX: mat(modelview_.back()); break;
@@ -453,7 +462,7 @@ int Context::get_values(GLenum pname, GLdouble* out, bool& normalized) {
     case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth)); break;
     case GL_MATRIX_MODE: FFC_GET(double(matrix_mode_)); break;
     case GL_VIEWPORT: FFC_GET(double(viewport_[0]), double(viewport_[1]), double(viewport_[2]), double(viewport_[3])); break;
-    case GL_DEPTH_RANGE: FFC_GET(depth_range_.x, depth_range_.y); normalized = true; break;
+    case GL_DEPTH_RANGE: FFC_GET(depth_range_.x, depth_range_.y); normalized = kFromFloat; break;
     case GL_MAX_LIGHTS: FFC_GET(8.0); break;
     case GL_LIGHT_MODEL_AMBIENT: vec4(model_.ambient, true); break;
     case GL_LIGHT_MODEL_LOCAL_VIEWER: FFC_GET(double(model_.local_viewer)); break;
@@ -467,9 +476,9 @@ int Context::get_values(GLenum pname, GLdouble* out, bool& normalized) {
     case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_)); break;
     case GL_DEPTH_FUNC: FFC_GET(double(depth_func_)); break;
     case GL_CURRENT_COLOR: vec4(color_, true); break;
-    case GL_CURRENT_NORMAL: FFC_GET(normal_.x, normal_.y, normal_.z); normalized = true; break;
+    case GL_CURRENT_NORMAL: FFC_GET(normal_.x, normal_.y, normal_.z); normalized = kFromFloat; break;
     case GL_COLOR_CLEAR_VALUE: vec4(glm::dvec4(clear_color_), true); break;
-    case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_); normalized = true; break;
+    case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_); normalized = kFromDouble; break;
     case GL_LINE_WIDTH: FFC_GET(double(line_width_)); break;
     case GL_RENDER_MODE: FFC_GET(double(render_mode_)); break;
     case GL_DEPTH_BITS: FFC_GET(24.0); break;
@@ -509,24 +518,27 @@ int Context::get_values(GLenum pname, GLdouble* out, bool& normalized) {
 
 void Context::GetDoublev(GLenum pname, GLdouble* out) {
   GLdouble v[16];
-  bool normalized;
+  int normalized;
   const int n = get_values(pname, v, normalized);
   std::copy(v, v + n, out);
 }
 
 void Context::GetFloatv(GLenum pname, GLfloat* out) {
   GLdouble v[16];
-  bool normalized;
+  int normalized;
   const int n = get_values(pname, v, normalized);
   for (int k = 0; k < n; ++k) out[k] = GLfloat(v[k]);
 }
 
 void Context::GetIntegerv(GLenum pname, GLint* out) {
   GLdouble v[16];
-  bool normalized;
+  int normalized;
   const int n = get_values(pname, v, normalized);
   // Other values round to the nearest integer, halves away from zero (Mesa's IROUND).
-  for (int k = 0; k < n; ++k) out[k] = normalized ? float_to_int(v[k]) : GLint(std::lround(v[k]));
+  for (int k = 0; k < n; ++k)
+    out[k] = normalized == kFromFloat    ? float_to_int(double(float(v[k])))
+             : normalized == kFromDouble ? float_to_int(v[k])
+                                         : GLint(std::lround(v[k]));
 }
 
 // ---------------------------------------------------------------- matrices
@@ -935,8 +947,40 @@ void Context::flush_primitive(bool) {
   };
 
   std::vector<raster::Vertex> prim;
-  auto at = [&](size_t i) -> const raster::Vertex& { return verts_[elements_.empty() ? i : elements_[i]]; };
+  auto index = [&](size_t i) { return elements_.empty() ? i : size_t(elements_[i]); };
+  auto at = [&](size_t i) -> const raster::Vertex& { return verts_[index(i)]; };
+  // Most triangles lie inside the view volume: their vertices map to the window once, however
+  // many triangles share them, and they skip clipping.
+  const bool triangles = prim_mode_ >= GL_TRIANGLES;
+  if (triangles) {
+    outside_.resize(verts_.size());
+    window_.resize(verts_.size());
+    for (size_t i = 0; i < verts_.size(); ++i)
+      if ((outside_[i] = raster::outside_planes(verts_[i].clip)) == 0) window_[i] = raster::map_to_window(verts_[i].clip, rs);
+  }
+  std::vector<raster::WindowVertex> inside(3);
+  auto emit_inside = [&](size_t i0, size_t i1, size_t i2, size_t provoking) {
+    const size_t v[3] = {index(i0), index(i1), index(i2)};
+    const bool back = raster::back_facing_triangle(verts_[v[0]].clip, verts_[v[1]].clip, verts_[v[2]].clip, rs);
+    if (raster::culled(back, rs)) return;
+    const bool use_back = back && rs.two_side;
+    for (int k = 0; k < 3; ++k) {
+      // Feedback reports each vertex's own colour; drawing takes the provoking one when flat.
+      const raster::Vertex& src = rs.flat && !feedback ? at(provoking) : verts_[v[k]];
+      inside[k] = window_[v[k]];
+      inside[k].color = use_back ? src.back : src.front;
+      inside[k].sec = use_back ? src.back_sec : src.front_sec;
+    }
+    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, inside);
+    raster::Triangle t;
+    if (raster::setup(inside[0], inside[1], inside[2], rs, t)) tris.push_back(t);
+  };
   auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+    if (kind == GL_POLYGON_TOKEN) {
+      const size_t* i = idx.begin();
+      if ((outside_[index(i[0])] | outside_[index(i[1])] | outside_[index(i[2])]) == 0)
+        return emit_inside(i[0], i[1], i[2], provoking);
+    }
     prim.clear();
     for (size_t i : idx) prim.push_back(at(i));
     const bool is_line = kind == GL_LINE_TOKEN, is_point = kind == GL_POINT_TOKEN;

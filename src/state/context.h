@@ -122,7 +122,9 @@ class Context {
   void set_client_state(GLenum array, bool on);
   bool* capability(GLenum cap);
   int enabled_state(GLenum cap);  // 1 or 0 for a capability or client array GL knows; -1 otherwise
-  int get_values(GLenum pname, GLdouble* out, bool& normalized);  // glGet's list; 0 after an error
+  // glGet's list: the values and their count (0 after an error), and how glGetIntegerv converts them.
+  enum { kRound, kFromFloat, kFromDouble };
+  int get_values(GLenum pname, GLdouble* out, int& normalized);
   std::vector<glm::dmat4>& stack();
   std::vector<glm::mat4>& stack_f();
   void set_light(int i, GLenum pname, const double* v);
@@ -183,6 +185,8 @@ class Context {
   std::vector<raster::Vertex> verts_;
   std::vector<uint32_t> elements_;            // glDrawElements: indices into verts_
   std::vector<raster::Triangle> triangles_;   // set up, waiting for the rasterizer
+  std::vector<unsigned> outside_;             // per vertex: the view-volume planes it is outside
+  std::vector<raster::WindowVertex> window_;  // per vertex inside: its window position
   int threads_ = 2;
 
   // Feedback
