@@ -1,6 +1,7 @@
 // ffcompat check: our pipeline against Mesa's. --level vertex compares lit colours vertex by
-// vertex through feedback mode.
+// vertex through feedback mode; --level pixel compares the pictures.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "check/vertex_check.h"
@@ -9,17 +10,45 @@
 namespace ffc::cli {
 
 void add_check(CLI::App& app) {
-  auto* cmd = app.add_subcommand("check", "Check our pipeline against Mesa's, vertex by vertex");
+  auto* cmd = app.add_subcommand("check", "Check our pipeline against Mesa's, vertex by vertex or pixel by pixel");
   auto opts = std::make_shared<SceneOptions>();
   auto level = std::make_shared<std::string>("vertex");
   auto tolerance = std::make_shared<double>(1e-5);
   auto json = std::make_shared<bool>(false);
+  auto max_steps = std::make_shared<int>(1);
+  auto out = std::make_shared<std::string>("check-failures");
   opts->add_to(cmd);
-  cmd->add_option("--level", *level, "vertex")->check(CLI::IsMember({"vertex"}))->capture_default_str();
-  cmd->add_option("--tolerance", *tolerance, "Largest colour difference that passes")->capture_default_str();
+  cmd->add_option("--level", *level, "vertex or pixel")->check(CLI::IsMember({"vertex", "pixel"}))->capture_default_str();
+  cmd->add_option("--tolerance", *tolerance, "vertex: largest colour difference that passes")->capture_default_str();
+  cmd->add_option("--max-diff", *max_steps, "pixel: largest difference in 8-bit steps that passes")->capture_default_str();
+  cmd->add_option("--out", *out, "pixel: where a failure writes mesa.png, soft.png and diff.png")->capture_default_str();
   cmd->add_flag("--json", *json, "Print the report as JSON");
   cmd->callback([=] {
     const scene::Spec spec = opts->spec();
+    if (*level == "pixel") {
+      auto mesa = backends::make("mesa"), soft = backends::make("soft");
+      const image::Image a = scene::render(spec, *mesa), b = scene::render(spec, *soft);
+      const image::Diff d = image::compare(a, b);
+      const bool pass = d.max_diff <= *max_steps;
+      nlohmann::json j = to_json(d);
+      j["level"] = "pixel", j["scene"] = to_json(spec), j["max_allowed"] = *max_steps, j["pass"] = pass;
+      if (!pass) {  // the evidence, for a person to look at
+        namespace fs = std::filesystem;
+        fs::create_directories(*out);
+        image::write_png((fs::path(*out) / "mesa.png").string(), a);
+        image::write_png((fs::path(*out) / "soft.png").string(), b);
+        image::write_png((fs::path(*out) / "diff.png").string(), image::heat_map(a, b));
+        j["written"] = *out;
+      }
+      if (*json)
+        print_json(j);
+      else
+        std::printf("max_diff %d steps, differing %.4f%%, rmse %.4f, psnr %.2f dB\n%s (max %d)%s\n", d.max_diff,
+                    100 * d.differing_share, d.rmse, d.psnr, pass ? "PASS" : "FAIL", *max_steps,
+                    pass ? "" : ("; pictures in " + *out).c_str());
+      if (!pass) throw CLI::RuntimeError(2);
+      return;
+    }
     const check::VertexReport r = check::compare_vertices(spec.width, spec.height, [&] { scene::draw(spec); });
     const bool pass = r.max_abs <= *tolerance || !r.known_mesa_deviations.empty();
     if (*json) {
