@@ -10,6 +10,9 @@ namespace ffc::state {
 namespace {
 
 Context* C() { return Context::current(); }
+
+// Mesa's INT_TO_FLOAT (main/macros.h): GLint [-2^31, 2^31-1] onto [-1, 1], (2i + 1) / (2^32 - 2).
+GLfloat int_to_float(GLint i) { return GLfloat((2.0f * GLfloat(i) + 1.0f) * (1.0f / 4294967294.0)); }
 #define FWD(call) \
   if (Context* ctx_ = C()) ctx_->call
 
@@ -54,6 +57,29 @@ void APIENTRY LightModeli(GLenum p, GLint v) { FWD(LightModeli(p, v)); }
 void APIENTRY Lightf(GLenum l, GLenum p, GLfloat v) { FWD(Lightf(l, p, v)); }
 void APIENTRY Lightfv(GLenum l, GLenum p, const GLfloat* v) { FWD(Lightfv(l, p, v)); }
 void APIENTRY Lighti(GLenum l, GLenum p, GLint v) { FWD(Lighti(l, p, v)); }
+void APIENTRY Lightiv(GLenum l, GLenum p, const GLint* v) { FWD(Lightiv(l, p, v)); }
+// glLightModeliv and glMaterialiv convert as Mesa's do (light.c, api_loopback.c): colours map
+// onto [-1, 1], other values convert directly; an unknown pname passes through to the float call,
+// which raises the error.
+void APIENTRY LightModeliv(GLenum p, const GLint* v) {
+  GLfloat f[4] = {0, 0, 0, 0};
+  if (p == GL_LIGHT_MODEL_AMBIENT)
+    for (int k = 0; k < 4; ++k) f[k] = int_to_float(v[k]);
+  else if (p == GL_LIGHT_MODEL_LOCAL_VIEWER || p == GL_LIGHT_MODEL_TWO_SIDE || p == GL_LIGHT_MODEL_COLOR_CONTROL)
+    f[0] = GLfloat(v[0]);
+  FWD(LightModelfv(p, f));
+}
+void APIENTRY Materialiv(GLenum face, GLenum p, const GLint* v) {
+  GLfloat f[4] = {0, 0, 0, 0};
+  switch (p) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE:
+      for (int k = 0; k < 4; ++k) f[k] = int_to_float(v[k]);
+      break;
+    case GL_SHININESS: f[0] = GLfloat(v[0]); break;
+    case GL_COLOR_INDEXES: for (int k = 0; k < 3; ++k) f[k] = GLfloat(v[k]); break;
+  }
+  FWD(Materialfv(face, p, f));
+}
 void APIENTRY LineWidth(GLfloat w) { FWD(LineWidth(w)); }
 void APIENTRY LoadIdentity() { FWD(LoadIdentity()); }
 void APIENTRY LoadMatrixd(const GLdouble* m) { FWD(LoadMatrix(glm::make_mat4(m))); }
@@ -100,6 +126,10 @@ void* proc_address(const char* name) {
   if (std::strcmp(name, "gl" #fn) == 0) return reinterpret_cast<void*>(&fn);
 #include "gl/gl_functions.inc"
 #undef FFC_GL_FUNCTION
+  // Entry points outside the dispatch's list, for callers that load them by name.
+  if (std::strcmp(name, "glLightiv") == 0) return reinterpret_cast<void*>(&Lightiv);
+  if (std::strcmp(name, "glLightModeliv") == 0) return reinterpret_cast<void*>(&LightModeliv);
+  if (std::strcmp(name, "glMaterialiv") == 0) return reinterpret_cast<void*>(&Materialiv);
   return nullptr;
 }
 
