@@ -456,10 +456,13 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
   };
   switch (pname) {
     case GL_MODELVIEW_MATRIX: mat(modelview_.back()); break;
+    case GL_TEXTURE_MATRIX: mat(texture_.back()); break;
     case GL_PROJECTION_MATRIX: mat(projection_.back()); break;
     case GL_MODELVIEW_STACK_DEPTH: FFC_GET(double(modelview_.size())); break;
     case GL_PROJECTION_STACK_DEPTH: FFC_GET(double(projection_.size())); break;
     case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth)); break;
+    case GL_MAX_TEXTURE_STACK_DEPTH: FFC_GET(double(kMaxTextureStackDepth)); break;
+    case GL_TEXTURE_STACK_DEPTH: FFC_GET(double(texture_.size())); break;
     case GL_MATRIX_MODE: FFC_GET(double(matrix_mode_)); break;
     case GL_VIEWPORT: FFC_GET(double(viewport_[0]), double(viewport_[1]), double(viewport_[2]), double(viewport_[3])); break;
     case GL_DEPTH_RANGE: FFC_GET(depth_range_.x, depth_range_.y); normalized = kFromFloat; break;
@@ -543,14 +546,18 @@ void Context::GetIntegerv(GLenum pname, GLint* out) {
 
 // ---------------------------------------------------------------- matrices
 
-std::vector<glm::dmat4>& Context::stack() { return matrix_mode_ == GL_PROJECTION ? projection_ : modelview_; }
-std::vector<glm::mat4>& Context::stack_f() { return matrix_mode_ == GL_PROJECTION ? projection_f_ : modelview_f_; }
+std::vector<glm::dmat4>& Context::stack() {
+  return matrix_mode_ == GL_PROJECTION ? projection_ : matrix_mode_ == GL_TEXTURE ? texture_ : modelview_;
+}
+std::vector<glm::mat4>& Context::stack_f() {
+  return matrix_mode_ == GL_PROJECTION ? projection_f_ : matrix_mode_ == GL_TEXTURE ? texture_f_ : modelview_f_;
+}
 
 void Context::MatrixMode(GLenum mode) {
   if (!outside_begin_end()) return;
-  // GL_TEXTURE is a valid mode; this pipeline has no texturing, so it keeps the modelview.
+  // GL_TEXTURE has its stack (nothing here reads it: there is no texturing).
   if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) return error(GL_INVALID_ENUM);
-  if (mode != GL_TEXTURE) matrix_mode_ = mode;
+  matrix_mode_ = mode;
 }
 
 void Context::LoadIdentity() { LoadMatrix(glm::dmat4(1)); }
@@ -570,7 +577,8 @@ void Context::MultMatrix(const glm::dmat4& m) {
 void Context::PushMatrix() {
   if (!outside_begin_end()) return;
   auto& s = stack();
-  if (s.size() >= kMaxStackDepth) return error(GL_STACK_OVERFLOW);
+  if (s.size() >= (matrix_mode_ == GL_TEXTURE ? kMaxTextureStackDepth : kMaxStackDepth))
+    return error(GL_STACK_OVERFLOW);
   s.push_back(s.back());
   stack_f().push_back(stack_f().back());
 }

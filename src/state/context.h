@@ -158,7 +158,10 @@ class Context {
   // The same stacks in float, computed as Mesa computes them (see float_matrix.h).
   std::vector<glm::mat4> modelview_f_{glm::mat4(1)}, projection_f_{glm::mat4(1)};
   glm::mat4 mvp_f_{1.0f};  // projection x modelview in float, refreshed as each primitive begins
-  static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for both stacks
+  static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for the modelview and projection stacks
+  static constexpr size_t kMaxTextureStackDepth = 10;
+  std::vector<glm::dmat4> texture_{glm::dmat4(1)};
+  std::vector<glm::mat4> texture_f_{glm::mat4(1)};
   glm::ivec4 viewport_;
   glm::dvec2 depth_range_{0, 1};
   glm::vec4 clear_color_{0, 0, 0, 0};

@@ -310,7 +310,7 @@ INSTANTIATE_TEST_SUITE_P(ColorMaterial, RoundTrip, ::testing::ValuesIn(color_mat
 // modelview. Mesa: GL_TEXTURE, modelview untouched. Needs a texture matrix stack in Context
 // (MatrixMode's apply part, stack(), GL_TEXTURE_MATRIX / GL_TEXTURE_STACK_DEPTH in glGet): enable
 // this row then.
-TEST(KnownDisagreement, DISABLED_MatrixModeTexture) {
+TEST(RoundTrip, MatrixModeTexture) {
   check_case({"MatrixModeTexture", nullptr, [] { glMatrixMode(GL_TEXTURE); glTranslatef(1, 2, 3); }, OK});
 }
 
