@@ -77,19 +77,33 @@ struct RuntimeShape {
   static bool specular(const Key& k) { return k.specular(); }
   static bool color_material(const Key& k) { return k.color_material(); }
   static bool separate_specular(const Key& k) { return k.separate_specular(); }
-  static bool simple_lights() { return false; }
+  template <typename L>
+  static bool local(const L& l) { return l.local; }
+  template <typename L>
+  static bool attenuated(const L& l) { return l.attenuated; }
+  template <typename L>
+  static bool spot(const L& l) { return l.spot; }
 };
 
-// Compile-time shape: the terms a key leaves out are not in the code at all. Simple lights are
-// directional without spot: L and (with an infinite viewer) h are per-light constants.
-template <bool TwoSide, bool LocalViewer, bool Specular, bool ColorMaterial, bool Separate, bool Simple>
+// What every enabled light is, when they agree: the kernel then has no per-light branches.
+enum LightKind : unsigned { kMixed = 0, kDirectional = 1, kPoint = 2, kPointAttenuated = 3 };
+
+// Compile-time shape: the terms a key leaves out are not in the code at all. Directional lights
+// without spot have L and (with an infinite viewer) h as per-light constants; point lights
+// without spot skip the cone, and without attenuation the division too.
+template <bool TwoSide, bool LocalViewer, bool Specular, bool ColorMaterial, bool Separate, unsigned Kind>
 struct StaticShape {
   static constexpr bool two_side(const Key&) { return TwoSide; }
   static constexpr bool local_viewer(const Key&) { return LocalViewer; }
   static constexpr bool specular(const Key&) { return Specular; }
   static constexpr bool color_material(const Key&) { return ColorMaterial; }
   static constexpr bool separate_specular(const Key&) { return Separate; }
-  static constexpr bool simple_lights() { return Simple; }
+  template <typename L>
+  static bool local(const L& l) { return Kind == kMixed ? l.local : Kind != kDirectional; }
+  template <typename L>
+  static bool attenuated(const L& l) { return Kind == kMixed ? l.attenuated : Kind == kPointAttenuated && l.attenuated; }
+  template <typename L>
+  static bool spot(const L& l) { return Kind == kMixed && l.spot; }
 };
 
 template <typename T, typename S>
@@ -123,13 +137,13 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       const PreparedLight<T>& L = c.light[i];
       V3<T> vp = L.pos;
       T att = 1;
-      if (!S::simple_lights() && L.local) {
+      if (S::local(L)) {
         const V3<T> d = L.pos - p;
         const T dist = glm::length(d);
         vp = dist > 0 ? d / dist : V3<T>(0);
-        if (L.attenuated) att = T(1) / (L.k0 + L.k1 * dist + L.k2 * dist * dist);
+        if (S::attenuated(L)) att = T(1) / (L.k0 + L.k1 * dist + L.k2 * dist * dist);
       }
-      if (!S::simple_lights() && L.spot) {
+      if (S::spot(L)) {
         const T cos_angle = glm::dot(-vp, L.spot_dir);
         if (cos_angle < L.spot_cos) continue;  // outside the cone: no contribution at all
         att *= std::pow(std::max(cos_angle, T(0)), L.spot_exp);
@@ -140,7 +154,7 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       V3<T> sum = amb + std::max(ndotl, T(0)) * dif;
       if (S::specular(key) && ndotl > 0) {
         V3<T> h = L.half;
-        if (S::local_viewer(key) || (!S::simple_lights() && L.local)) {
+        if (S::local_viewer(key) || S::local(L)) {
           h = vp + to_eye;
           const T hl = glm::length(h);
           h = hl > 0 ? h / hl : V3<T>(0);
@@ -174,10 +188,10 @@ void batch(const Prepared<T>& c, const V4<T>* p, const V3<T>* n, const V4<T>* co
 }
 
 // Shape index: bit 0 two-sided, 1 local viewer, 2 specular, 3 colour material, 4 separate
-// specular, 5 simple lights. Every combination is instantiated once, at compile time.
+// specular, bits 5-6 the light kind. Every combination is instantiated once, at compile time.
 template <typename T, unsigned I>
 constexpr Kernel<T> instance() {
-  return &batch<T, StaticShape<(I & 1) != 0, (I & 2) != 0, (I & 4) != 0, (I & 8) != 0, (I & 16) != 0, (I & 32) != 0>>;
+  return &batch<T, StaticShape<(I & 1) != 0, (I & 2) != 0, (I & 4) != 0, (I & 8) != 0, (I & 16) != 0, (I >> 5) & 3>>;
 }
 
 template <typename T, unsigned... I>
@@ -188,16 +202,23 @@ constexpr std::array<Kernel<T>, sizeof...(I)> table(std::integer_sequence<unsign
 }  // namespace
 
 unsigned shape_index(const Key& k) {
-  bool simple = true;
-  for (int i = 0; i < 8; ++i)
-    if (k.enabled(i) && (k.local(i) || k.spot(i))) simple = false;
+  bool directional = true, point = true, spot = false, attenuated = false;
+  for (int i = 0; i < 8; ++i) {
+    if (!k.enabled(i)) continue;
+    directional &= !k.local(i), point &= k.local(i);
+    spot |= k.spot(i), attenuated |= k.attenuated(i);
+  }
+  const unsigned kind = spot ? kMixed
+                        : directional ? kDirectional
+                        : point ? (attenuated ? kPointAttenuated : kPoint)
+                                : kMixed;
   return unsigned(k.two_side()) | unsigned(k.local_viewer()) << 1 | unsigned(k.specular()) << 2 |
-         unsigned(k.color_material()) << 3 | unsigned(k.separate_specular()) << 4 | unsigned(simple) << 5;
+         unsigned(k.color_material()) << 3 | unsigned(k.separate_specular()) << 4 | kind << 5;
 }
 
 template <typename T>
 Kernel<T> specialised(const Key& key) {
-  static constexpr auto kernels = table<T>(std::make_integer_sequence<unsigned, 64>());
+  static constexpr auto kernels = table<T>(std::make_integer_sequence<unsigned, 128>());
   return kernels[shape_index(key)];
 }
 

@@ -82,8 +82,9 @@ Lit<T> light(const Prepared<T>& c, const V4<T>& p, const V3<T>& n, const V4<T>& 
 
 // Lights `count` vertices. The generic kernel reads every choice from the key at run time; a
 // specialised one is compiled for the key's shape (two-sided, local viewer, specular, colour
-// material, separate specular, all lights directional without spot), so what the scene does not
-// use is not in its code. Both give the same colours.
+// material, separate specular, and whether the lights are all directional, all points, all
+// points without attenuation, or mixed), so what the scene does not use is not in its code.
+// Both give the same colours.
 template <typename T>
 using Kernel = void (*)(const Prepared<T>& c, const V4<T>* p, const V3<T>* n, const V4<T>* color, size_t count,
                         Lit<T>* out);
@@ -91,6 +92,6 @@ template <typename T>
 Kernel<T> generic();
 template <typename T>
 Kernel<T> specialised(const Key& key);
-unsigned shape_index(const Key& key);  // which of the 64 compiled shapes a key selects
+unsigned shape_index(const Key& key);  // which of the 128 compiled shapes a key selects
 
 }  // namespace ffc::lighting

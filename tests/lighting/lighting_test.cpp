@@ -23,6 +23,9 @@ struct Rig {
       k.bits |= 1u << i;
       if (l[i].position.w != 0) k.bits |= 1u << (8 + i);
       if (l[i].spot_cutoff != 180) k.bits |= 1u << (16 + i);
+      if (l[i].position.w != 0 && (l[i].constant_attenuation != 1 || l[i].linear_attenuation != 0 ||
+                                   l[i].quadratic_attenuation != 0))
+        k.extra |= 1u << i;
       for (int f = 0; f < 2; ++f)
         if (glm::dvec3(l[i].specular) * glm::dvec3(m[f].specular) != glm::dvec3(0)) k.extra |= 1u << 8;
     }
@@ -156,8 +159,8 @@ TEST(Lighting, EmissionAndColoursAboveOneClamp) {
 TEST(Kernels, SpecialisedAgreeWithGenericOnRandomStates) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1), pos(0, 1);
-  unsigned shapes_seen = 0;
-  for (int trial = 0; trial < 400; ++trial) {
+  unsigned long long shapes_seen = 0;
+  for (int trial = 0; trial < 512; ++trial) {
     Rig s;
     const int lights = 1 + trial % 8;
     for (int i = 0; i < lights; ++i) {
@@ -166,9 +169,11 @@ TEST(Kernels, SpecialisedAgreeWithGenericOnRandomStates) {
       l.diffuse = {pos(rng), pos(rng), pos(rng), 1};
       l.specular = {pos(rng), pos(rng), pos(rng), 1};
       l.ambient = {pos(rng), pos(rng), pos(rng), 1};
-      l.position = {u(rng) * 5, u(rng) * 5, u(rng) * 5, (trial >> 1) % 2 ? 1.0 : 0.0};
+      // All directional, all points, or (every fourth trial) mixed.
+      const bool point = trial % 4 == 3 ? i % 2 == 0 : (trial >> 1) % 2 == 1;
+      l.position = {u(rng) * 5, u(rng) * 5, u(rng) * 5, point ? 1.0 : 0.0};
       if ((trial >> 2) % 2) l.spot_cutoff = 10 + 80 * pos(rng), l.spot_exponent = 128 * pos(rng);
-      l.linear_attenuation = pos(rng);
+      l.linear_attenuation = (trial >> 7) % 2 ? pos(rng) : 0.0;
     }
     for (auto& m : s.m) {
       m.specular = (trial >> 3) % 2 ? glm::dvec4(pos(rng), pos(rng), pos(rng), 1) : glm::dvec4(0, 0, 0, 1);
@@ -180,7 +185,7 @@ TEST(Kernels, SpecialisedAgreeWithGenericOnRandomStates) {
     s.model.color_material = (trial >> 6) % 2;
     s.model.separate_specular = trial % 3 == 0;
     const Key key = s.key();
-    shapes_seen |= 1u << (shape_index(key) % 32);
+    shapes_seen |= 1ull << shape_index(key) % 64;
     const auto prepared = prepare<float>(s.l, s.m, s.model, key);
     std::vector<glm::vec4> p, c;
     std::vector<glm::vec3> n;
@@ -199,7 +204,7 @@ TEST(Kernels, SpecialisedAgreeWithGenericOnRandomStates) {
           ASSERT_NEAR(a[v].secondary[f][k], b[v].secondary[f][k], 1e-6) << "trial " << trial;
         }
   }
-  EXPECT_GT(__builtin_popcount(shapes_seen), 16);
+  EXPECT_GT(__builtin_popcountll(shapes_seen), 24);
 }
 
 }  // namespace
