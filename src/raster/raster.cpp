@@ -161,15 +161,23 @@ void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c
 int64_t snap(double v) { return int64_t(std::nearbyint(v * 256.0)); }
 
 // The plane through three (x, y, value) points: value = p0 + p1 x + p2 y.
-void plane(const glm::dvec3 (&pos)[3], const double (&v)[3], double* p) {
-  const double x1 = pos[1].x - pos[0].x, y1 = pos[1].y - pos[0].y;
-  const double x2 = pos[2].x - pos[0].x, y2 = pos[2].y - pos[0].y;
-  const double det = x1 * y2 - x2 * y1;
-  const double d1 = v[1] - v[0], d2 = v[2] - v[0];
-  p[1] = (d1 * y2 - d2 * y1) / det;
-  p[2] = (x1 * d2 - x2 * d1) / det;
-  p[0] = v[0] - p[1] * pos[0].x - p[2] * pos[0].y;
-}
+// Solves value = p0 + p1 x + p2 y through three points once per triangle; each attribute is then
+// a few multiplications.
+struct PlaneSolver {
+  double x0, y0, x1, y1, x2, y2, inv_det;
+  explicit PlaneSolver(const glm::dvec3 (&pos)[3])
+      : x0(pos[0].x), y0(pos[0].y), x1(pos[1].x - pos[0].x), y1(pos[1].y - pos[0].y),
+        x2(pos[2].x - pos[0].x), y2(pos[2].y - pos[0].y) {
+    const double det = x1 * y2 - x2 * y1;
+    inv_det = det != 0 ? 1 / det : 0;  // degenerate unsnapped: a constant through vertex 0
+  }
+  void operator()(double a, double b, double c, double* p) const {
+    const double d1 = b - a, d2 = c - a;
+    p[1] = (d1 * y2 - d2 * y1) * inv_det;
+    p[2] = (x1 * d2 - x2 * d1) * inv_det;
+    p[0] = a - p[1] * x0 - p[2] * y0;
+  }
+};
 
 // First and last k with e0 + a k >= thr, for k in [lo, hi]; empty when first > last.
 inline void span(int64_t e0, int64_t a, int64_t thr, int& lo, int& hi) {
@@ -274,17 +282,8 @@ bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& v
   t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
   t.ymax = hi(std::max({t.y[0], t.y[1], t.y[2]}));
   const glm::dvec3 pos[3] = {v[0]->pos, v[1]->pos, v[2]->pos};
-  // Planes from the unsnapped positions; if those are degenerate the snapped ones are not, so
-  // fall back to a flat plane through the first vertex.
-  const double det = (pos[1].x - pos[0].x) * (pos[2].y - pos[0].y) - (pos[2].x - pos[0].x) * (pos[1].y - pos[0].y);
-  auto make = [&](double a, double b, double c, double* p) {
-    if (det == 0) {
-      p[0] = a, p[1] = p[2] = 0;
-      return;
-    }
-    const double vals[3] = {a, b, c};
-    plane(pos, vals, p);
-  };
+  // Planes from the unsnapped positions.
+  const PlaneSolver make(pos);
   make(v[0]->pos.z, v[1]->pos.z, v[2]->pos.z, t.z);
   if (s.flat) {  // a constant, as llvmpipe's constant interpolation: no rounding through 1/w
     t.inv_w[0] = 1, t.inv_w[1] = t.inv_w[2] = 0;
