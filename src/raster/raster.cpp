@@ -305,18 +305,22 @@ bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& v
   return true;
 }
 
-void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, const State& s, int threads) {
+void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
+                    int threads) {
   constexpr int kBandRows = 16;
+  size_t total = 0;
+  for (const auto* l : lists) total += l->size();
   auto work = [&](int band, int bands) {
-    for (const Triangle& t : tris) {
-      Triangle c = t;  // clip the box to the framebuffer
-      c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
-      c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
-      if (c.xmin <= c.xmax && c.ymin <= c.ymax) rasterize(fb, c, s, kBandRows, band, bands);
-    }
+    for (const auto* l : lists)
+      for (const Triangle& t : *l) {
+        Triangle c = t;  // clip the box to the framebuffer
+        c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
+        c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
+        if (c.xmin <= c.xmax && c.ymin <= c.ymax) rasterize(fb, c, s, kBandRows, band, bands);
+      }
   };
   threads = std::max(1, std::min(threads, (fb.height + kBandRows - 1) / kBandRows));
-  if (threads == 1 || tris.size() < 64) return work(0, 1);
+  if (threads == 1 || total < 64) return work(0, 1);
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(work, t, threads);
   work(0, threads);

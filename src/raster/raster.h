@@ -82,7 +82,11 @@ bool setup(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, 
 
 // Rasterizes in order, rows shared out between `threads` threads in interleaved bands: every pixel
 // is written by one thread, in primitive order, so the picture does not depend on the count.
-void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, const State& s, int threads);
+void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
+                    int threads);  // the lists one after the other
+inline void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, const State& s, int threads) {
+  draw_triangles(fb, std::vector<const std::vector<Triangle>*>{&tris}, s, threads);
+}
 
 void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const State& s);
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);

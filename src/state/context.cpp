@@ -8,6 +8,7 @@
 #include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <thread>
 
 namespace ffc::state {
 
@@ -966,48 +967,59 @@ void Context::flush_primitive(bool) {
     for (size_t i = 0; i < verts_.size(); ++i)
       if ((outside_[i] = raster::outside_planes(verts_[i].clip)) == 0) window_[i] = raster::map_to_window(verts_[i].clip, rs);
   }
-  std::vector<raster::WindowVertex> inside(3);
-  auto emit_inside = [&](size_t i0, size_t i1, size_t i2, size_t provoking) {
-    const size_t v[3] = {index(i0), index(i1), index(i2)};
-    const bool back = raster::back_facing_triangle(verts_[v[0]].clip, verts_[v[1]].clip, verts_[v[2]].clip, rs);
-    if (raster::culled(back, rs)) return;
-    const bool use_back = back && rs.two_side;
-    for (int k = 0; k < 3; ++k) {
-      // Feedback reports each vertex's own colour; drawing takes the provoking one when flat.
-      const raster::Vertex& src = rs.flat && !feedback ? at(provoking) : verts_[v[k]];
-      inside[k] = window_[v[k]];
-      inside[k].color = use_back ? src.back : src.front;
-      inside[k].sec = use_back ? src.back_sec : src.front_sec;
-    }
-    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, inside);
-    raster::Triangle t;
-    if (raster::setup(inside[0], inside[1], inside[2], rs, t)) tris.push_back(t);
+  // One triangle: inside the view volume from the per-vertex window positions, otherwise
+  // clipped. Safe to run on several threads at once when not in feedback mode (only `out` and
+  // `scratch` are written).
+  struct Scratch {
+    std::vector<raster::WindowVertex> inside = std::vector<raster::WindowVertex>(3);
+    std::vector<raster::Vertex> prim;
   };
-  auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
-    if (kind == GL_POLYGON_TOKEN) {
-      const size_t* i = idx.begin();
-      if ((outside_[index(i[0])] | outside_[index(i[1])] | outside_[index(i[2])]) == 0)
-        return emit_inside(i[0], i[1], i[2], provoking);
+  auto emit_triangle = [&](size_t i0, size_t i1, size_t i2, size_t provoking, std::vector<raster::Triangle>& out,
+                           Scratch& scratch) {
+    const size_t v[3] = {index(i0), index(i1), index(i2)};
+    if ((outside_[v[0]] | outside_[v[1]] | outside_[v[2]]) == 0) {
+      const bool back = raster::back_facing_triangle(verts_[v[0]].clip, verts_[v[1]].clip, verts_[v[2]].clip, rs);
+      if (raster::culled(back, rs)) return;
+      const bool use_back = back && rs.two_side;
+      std::vector<raster::WindowVertex>& in = scratch.inside;
+      for (int k = 0; k < 3; ++k) {
+        // Feedback reports each vertex's own colour; drawing takes the provoking one when flat.
+        const raster::Vertex& src = rs.flat && !feedback ? at(provoking) : verts_[v[k]];
+        in[k] = window_[v[k]];
+        in[k].color = use_back ? src.back : src.front;
+        in[k].sec = use_back ? src.back_sec : src.front_sec;
+      }
+      if (feedback) return emit_feedback(GL_POLYGON_TOKEN, in);
+      raster::Triangle t;
+      if (raster::setup(in[0], in[1], in[2], rs, t)) out.push_back(t);
+      return;
     }
+    scratch.prim.assign({verts_[v[0]], verts_[v[1]], verts_[v[2]]});
+    const auto w = raster::clip_and_map(scratch.prim, rs, feedback ? nullptr : &at(provoking), false);
+    if (w.empty()) return;
+    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w);
+    raster::Triangle t;
+    for (size_t k = 1; k + 1 < w.size(); ++k)
+      if (raster::setup(w[0], w[k], w[k + 1], rs, t)) out.push_back(t);
+  };
+  Scratch scratch;
+  auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+    const size_t* i = idx.begin();
+    if (kind == GL_POLYGON_TOKEN) return emit_triangle(i[0], i[1], i[2], provoking, tris, scratch);
     prim.clear();
-    for (size_t i : idx) prim.push_back(at(i));
-    const bool is_line = kind == GL_LINE_TOKEN, is_point = kind == GL_POINT_TOKEN;
+    for (size_t k : idx) prim.push_back(at(k));
+    const bool is_point = kind == GL_POINT_TOKEN;
     if (is_point) prim.push_back(prim[0]);  // a point clips like a degenerate line
     // Feedback reports each vertex's own colour (Mesa does not flatten there).
-    const auto w = raster::clip_and_map(prim, rs, feedback ? nullptr : &at(provoking), is_line || is_point);
+    const auto w = raster::clip_and_map(prim, rs, feedback ? nullptr : &at(provoking), true);
     if (w.empty()) return;
     if (feedback) return emit_feedback(kind, w);
     if (is_point) {
       std::vector<raster::WindowVertex> pt = {w[0], w[0]};
       pt[1].pos.x += 1;
       raster::draw_line(fb_, pt, rs);
-    } else if (is_line) {
-      raster::draw_line(fb_, w, rs);
     } else {
-      // Triangles are set up now and rasterized together at the end, over the cores.
-      raster::Triangle t;
-      for (size_t i = 1; i + 1 < w.size(); ++i)
-        if (raster::setup(w[0], w[i], w[i + 1], rs, t)) tris.push_back(t);
+      raster::draw_line(fb_, w, rs);
     }
   };
 
@@ -1025,6 +1037,28 @@ void Context::flush_primitive(bool) {
       if (prim_mode_ == GL_LINE_LOOP && n >= 2) emit({n - 1, 0}, 0, GL_LINE_TOKEN);
       break;
     case GL_TRIANGLES:
+      if (!feedback && threads_ > 1 && n >= 3 * 4096) {
+        // Assembly and setup split in contiguous ranges, one per thread; the rasterizer takes
+        // the ranges in order, so the picture is the same as from one thread.
+        const size_t count = n / 3, parts = size_t(threads_);
+        tri_parts_.resize(parts - 1);
+        std::vector<std::thread> pool;
+        for (size_t p = 1; p < parts; ++p)
+          pool.emplace_back([&, p] {
+            Scratch local;
+            std::vector<raster::Triangle>& out = tri_parts_[p - 1];
+            out.clear();
+            for (size_t t = count * p / parts; t < count * (p + 1) / parts; ++t)
+              emit_triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, out, local);
+          });
+        for (size_t t = 0; t < count / parts; ++t) emit_triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, tris, scratch);
+        for (auto& th : pool) th.join();
+        std::vector<const std::vector<raster::Triangle>*> lists = {&tris};
+        for (const auto& part : tri_parts_) lists.push_back(&part);
+        raster::draw_triangles(fb_, lists, rs, threads_);
+        verts_.clear();
+        return;
+      }
       for (size_t i = 0; i + 2 < n; i += 3) emit({i, i + 1, i + 2}, i + 2, GL_POLYGON_TOKEN);
       break;
     case GL_TRIANGLE_STRIP:

@@ -188,6 +188,7 @@ class Context {
   std::vector<raster::Vertex> verts_;
   std::vector<uint32_t> elements_;            // glDrawElements: indices into verts_
   std::vector<raster::Triangle> triangles_;   // set up, waiting for the rasterizer
+  std::vector<std::vector<raster::Triangle>> tri_parts_;  // the other threads' shares of a draw
   std::vector<unsigned> outside_;             // per vertex: the view-volume planes it is outside
   std::vector<raster::WindowVertex> window_;  // per vertex inside: its window position
   int threads_ = 2;
