@@ -1,12 +1,20 @@
 #include "raster/raster.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <emmintrin.h>
 #include <thread>
 
 namespace ffc::raster {
+
+// Fragments written from a non-finite colour (NaN or an infinity before the clamp): what
+// `ffcompat stress` reads to tell that no pixel was written from one (declared in
+// stress/raster_probe.h). The check costs three SSE instructions per fragment, no branch.
+static std::atomic<uint64_t> g_nonfinite_fragments{0};
+uint64_t nonfinite_fragments() { return g_nonfinite_fragments.load(std::memory_order_relaxed); }
+void reset_nonfinite_fragments() { g_nonfinite_fragments.store(0, std::memory_order_relaxed); }
 
 uint8_t to_unorm8(double c) {
   if (!(c > 0)) return 0;  // also NaN
@@ -154,6 +162,7 @@ void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c
     fb.depth[i] = zi;
   }
   uint8_t* p = &fb.color[i * 4];
+  if (!std::isfinite(c.r + c.g + c.b + c.a)) g_nonfinite_fragments.fetch_add(1, std::memory_order_relaxed);
   for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k]);
 }
 
@@ -206,6 +215,7 @@ void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows
     thr[i] = t.inclusive[i] ? 0 : 1;
   }
   const int y0 = t.ymin - t.ymin % band_rows;
+  uint64_t nonfinite = 0;
   for (int by = y0; by <= t.ymax; by += band_rows) {
     if ((by / band_rows) % bands != band) continue;
     for (int py = std::max(by, t.ymin); py <= std::min(by + band_rows - 1, t.ymax); ++py) {
@@ -240,6 +250,7 @@ void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows
         if (pass) {
           // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
           __m128 c = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
+          nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(c, zero), zero)) != 0;  // c * 0: NaN unless finite
           c = _mm_min_ps(_mm_max_ps(c, zero), one);
           const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(c, k255));
           const __m128i i16 = _mm_packs_epi32(i32, i32);
@@ -251,15 +262,21 @@ void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows
       }
     }
   }
+  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
 }
 
 }  // namespace
 
 bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& vc, const State& s, Triangle& t) {
-  const WindowVertex* v[3] = {&va, &vb, &vc};
+  return setup({{{&va, &va.color, &va.sec}, {&vb, &vb.color, &vb.sec}, {&vc, &vc.color, &vc.sec}}}, s, t);
+}
+
+bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
+  const SetupVertex* v[3] = {&sv[0], &sv[1], &sv[2]};
   for (int i = 0; i < 3; ++i) {
-    t.x[i] = v[i]->snapped ? v[i]->sx : snap(v[i]->pos.x);
-    t.y[i] = v[i]->snapped ? v[i]->sy : snap(v[i]->pos.y);
+    const WindowVertex& w = *v[i]->w;
+    t.x[i] = w.snapped ? w.sx : snap(w.pos.x);
+    t.y[i] = w.snapped ? w.sy : snap(w.pos.y);
   }
   t.area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
   if (t.area == 0) return false;
@@ -281,24 +298,25 @@ bool setup(const WindowVertex& va, const WindowVertex& vb, const WindowVertex& v
   t.xmax = hi(std::max({t.x[0], t.x[1], t.x[2]}));
   t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
   t.ymax = hi(std::max({t.y[0], t.y[1], t.y[2]}));
-  const glm::dvec3 pos[3] = {v[0]->pos, v[1]->pos, v[2]->pos};
+  if (t.xmin > t.xmax || t.ymin > t.ymax) return false;  // between pixel centres: nothing to draw
+  const glm::dvec3 pos[3] = {v[0]->w->pos, v[1]->w->pos, v[2]->w->pos};
   // Planes from the unsnapped positions.
   const PlaneSolver make(pos);
-  make(v[0]->pos.z, v[1]->pos.z, v[2]->pos.z, t.z);
+  make(pos[0].z, pos[1].z, pos[2].z, t.z);
   if (s.flat) {  // a constant, as llvmpipe's constant interpolation: no rounding through 1/w
     t.inv_w[0] = 1, t.inv_w[1] = t.inv_w[2] = 0;
     for (int k = 0; k < 4; ++k) {
-      t.c0[k] = float(v[0]->color[k] + (s.add_secondary && k < 3 ? v[0]->sec[k] : 0));
+      t.c0[k] = float((*v[0]->color)[k] + (s.add_secondary && k < 3 ? (*v[0]->sec)[k] : 0));
       t.cx[k] = t.cy[k] = 0;
     }
     return true;
   }
   double p[3];
-  make(v[0]->inv_w, v[1]->inv_w, v[2]->inv_w, p);
+  make(v[0]->w->inv_w, v[1]->w->inv_w, v[2]->w->inv_w, p);
   for (int i = 0; i < 3; ++i) t.inv_w[i] = float(p[i]);
   for (int k = 0; k < 4; ++k) {
     double c[3];
-    for (int i = 0; i < 3; ++i) c[i] = (v[i]->color[k] + (s.add_secondary && k < 3 ? v[i]->sec[k] : 0)) * v[i]->inv_w;
+    for (int i = 0; i < 3; ++i) c[i] = ((*v[i]->color)[k] + (s.add_secondary && k < 3 ? (*v[i]->sec)[k] : 0)) * v[i]->w->inv_w;
     make(c[0], c[1], c[2], p);
     t.c0[k] = float(p[0]), t.cx[k] = float(p[1]), t.cy[k] = float(p[2]);
   }
@@ -313,6 +331,8 @@ void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangl
   auto work = [&](int band, int bands) {
     for (const auto* l : lists)
       for (const Triangle& t : *l) {
+        // Most triangles fall in one band: skip the others' without touching more of them.
+        if (t.ymin / kBandRows == t.ymax / kBandRows && (t.ymin / kBandRows) % bands != band) continue;
         Triangle c = t;  // clip the box to the framebuffer
         c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
         c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);

@@ -3,6 +3,7 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
@@ -77,8 +78,15 @@ struct Triangle {
   alignas(16) float c0[4], cx[4], cy[4];
 };
 
-// False when the triangle covers no area once snapped.
+// False when the triangle covers no pixel centre once snapped.
 bool setup(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const State& s, Triangle& out);
+// The same with the colours apart from the positions (no copies of shared window vertices).
+struct SetupVertex {
+  const WindowVertex* w;
+  const glm::dvec4* color;
+  const glm::dvec4* sec;
+};
+bool setup(const std::array<SetupVertex, 3>& v, const State& s, Triangle& out);
 
 // Rasterizes in order, rows shared out between `threads` threads in interleaved bands: every pixel
 // is written by one thread, in primitive order, so the picture does not depend on the count.

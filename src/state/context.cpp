@@ -981,17 +981,22 @@ void Context::flush_primitive(bool) {
       const bool back = raster::back_facing_triangle(verts_[v[0]].clip, verts_[v[1]].clip, verts_[v[2]].clip, rs);
       if (raster::culled(back, rs)) return;
       const bool use_back = back && rs.two_side;
-      std::vector<raster::WindowVertex>& in = scratch.inside;
-      for (int k = 0; k < 3; ++k) {
-        // Feedback reports each vertex's own colour; drawing takes the provoking one when flat.
-        const raster::Vertex& src = rs.flat && !feedback ? at(provoking) : verts_[v[k]];
-        in[k] = window_[v[k]];
-        in[k].color = use_back ? src.back : src.front;
-        in[k].sec = use_back ? src.back_sec : src.front_sec;
+      if (feedback) {  // each vertex's own colour
+        std::vector<raster::WindowVertex>& in = scratch.inside;
+        for (int k = 0; k < 3; ++k) {
+          in[k] = window_[v[k]];
+          in[k].color = use_back ? verts_[v[k]].back : verts_[v[k]].front;
+          in[k].sec = use_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
+        }
+        return emit_feedback(GL_POLYGON_TOKEN, in);
       }
-      if (feedback) return emit_feedback(GL_POLYGON_TOKEN, in);
+      std::array<raster::SetupVertex, 3> sv;
+      for (int k = 0; k < 3; ++k) {
+        const raster::Vertex& src = rs.flat ? at(provoking) : verts_[v[k]];  // flat: the provoking colour
+        sv[k] = {&window_[v[k]], use_back ? &src.back : &src.front, use_back ? &src.back_sec : &src.front_sec};
+      }
       raster::Triangle t;
-      if (raster::setup(in[0], in[1], in[2], rs, t)) out.push_back(t);
+      if (raster::setup(sv, rs, t)) out.push_back(t);
       return;
     }
     scratch.prim.assign({verts_[v[0]], verts_[v[1]], verts_[v[2]]});
