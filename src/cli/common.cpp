@@ -7,38 +7,87 @@
 namespace ffc::cli {
 
 void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals) {
-  app->add_option("--scene", scene, "Built-in scene: cube or icosphere")->capture_default_str();
+  app->add_option("--scene", scene, "Scene: cube, icosphere, or a TOML scene file (*.toml)")->capture_default_str();
   if (with_shade_and_normals) {
-    app->add_option("--shade", shade, "glShadeModel: flat or smooth (default: smooth)");
+    app->add_option("--shade", shade, "glShadeModel: flat or smooth (default: smooth, or the file's)");
     app->add_option("--normals", normals,
-                    "Normals: face, average (OpenMesh) or sphere (default: cube face, icosphere sphere)");
+                    "Normals: face, average (OpenMesh) or sphere, or file for a mesh file's own "
+                    "(default: cube face, icosphere sphere, or the file's)");
   }
-  app->add_option("--depth", depth, "Icosphere subdivision depth, 0..12 (default 3)")->check(CLI::Range(0, 12));
-  app->add_option("--size", size, "Framebuffer WxH (default: cube 640x640, icosphere 512x512)");
-  app->add_option("--cam-angle", cam_angle, "Cube camera angle around y, degrees")->capture_default_str();
-  app->add_option("--cam-height", cam_height, "Cube camera height")->capture_default_str();
+  app->add_option("--depth", depth, "Icosphere subdivision depth, 0..12 (default 3, or the file's)")->check(CLI::Range(0, 12));
+  app->add_option("--size", size, "Framebuffer WxH (default: cube 640x640, icosphere 512x512, or the file's)");
+  cam_angle_option = app->add_option("--cam-angle", cam_angle, "Cube camera angle around y, degrees (built-in cube only)")->capture_default_str();
+  cam_height_option = app->add_option("--cam-height", cam_height, "Cube camera height (built-in cube only)")->capture_default_str();
   app->add_option("--backend", backend, "Renderer: mesa")->capture_default_str();
 }
 
+static void parse_size(const std::string& size, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 ||
+      h < 1 || w > 16384 || h > 16384)
+    throw std::invalid_argument("--size '" + size + "' is not WxH with sides 1..16384");
+  width = w;
+  height = h;
+}
+
 scene::Spec SceneOptions::spec() const {
+  if (is_file()) throw std::invalid_argument("--scene '" + scene + "' is a scene file, not a built-in scene");
+  if (scene != "cube" && scene != "icosphere")
+    throw std::invalid_argument("unknown scene '" + scene + "' (cube, icosphere, or a .toml scene file)");
   scene::Spec s = scene::builtin(scene);
   if (!shade.empty()) s.shade = scene::parse_shade(shade);
   if (!normals.empty()) s.normals = mesh::parse_normal_source(normals);
   if (depth >= 0) s.depth = depth;
-  if (!size.empty()) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-        w < 1 || h < 1 || w > 16384 || h > 16384)
-      throw std::invalid_argument("--size '" + size + "' is not WxH with sides 1..16384");
-    s.width = w;
-    s.height = h;
-  }
+  if (!size.empty()) parse_size(size, s.width, s.height);
   if (!std::isfinite(cam_angle) || !std::isfinite(cam_height))
     throw std::invalid_argument("--cam-angle and --cam-height must be finite");
   s.cam_angle_deg = cam_angle;
   s.cam_height = cam_height;
   return s;
+}
+
+scene::Description SceneOptions::description() const {
+  if (!is_file()) return scene::describe(spec());
+  if ((cam_angle_option && cam_angle_option->count()) || (cam_height_option && cam_height_option->count()))
+    throw std::invalid_argument("--cam-angle and --cam-height move the built-in cube's camera; a scene file has its own [camera]");
+  // Check the options before reading the file, so a bad option is reported as such.
+  std::optional<scene::Shade> shade_override;
+  int width = 0, height = 0;
+  if (!shade.empty()) shade_override = scene::parse_shade(shade);
+  if (!normals.empty()) {
+    scene::Object probe;
+    scene::set_normals(probe, normals);  // throws for an unknown name
+  }
+  if (!size.empty()) parse_size(size, width, height);
+
+  scene::Description d = scene::load_file(scene);
+  if (shade_override) d.shade = *shade_override;
+  for (size_t i = 0; i < d.objects.size(); ++i) {
+    scene::Object& o = d.objects[i];
+    if (!normals.empty()) {
+      scene::set_normals(o, normals);
+      if (o.file_normals && !(o.file && o.file->has_normals))
+        throw std::invalid_argument("--normals file: mesh " + std::to_string(i) + " (" + scene::to_string(o) +
+                                    ") has no normals of its own");
+    }
+    if (depth >= 0 && o.kind == scene::Object::Kind::Icosphere) o.depth = depth;
+  }
+  if (!size.empty()) d.width = width, d.height = height;
+  return d;
+}
+
+nlohmann::json SceneOptions::json(const scene::Description& d) const {
+  nlohmann::json j = to_json(d);
+  if (!is_file() && scene == "cube") j["cam_angle"] = cam_angle, j["cam_height"] = cam_height;
+  return j;
+}
+
+std::string normals_of(const scene::Description& d) {
+  if (d.objects.empty()) return "none";
+  for (const auto& o : d.objects)
+    if (scene::normals_name(o) != scene::normals_name(d.objects.front())) return "mixed";
+  return scene::normals_name(d.objects.front());
 }
 
 nlohmann::json to_json(const scene::Spec& s) {
@@ -49,6 +98,21 @@ nlohmann::json to_json(const scene::Spec& s) {
                       {"height", s.height}};
   if (s.name == "icosphere") j["depth"] = s.depth;
   if (s.name == "cube") j["cam_angle"] = s.cam_angle_deg, j["cam_height"] = s.cam_height;
+  return j;
+}
+
+nlohmann::json to_json(const scene::Description& d) {
+  nlohmann::json j = {{"scene", d.name},
+                      {"shade", scene::to_string(d.shade)},
+                      {"normals", normals_of(d)},
+                      {"width", d.width},
+                      {"height", d.height}};
+  for (const auto& o : d.objects)
+    if (o.kind == scene::Object::Kind::Icosphere) {
+      j["depth"] = o.depth;
+      break;
+    }
+  if (!d.source.empty()) j["file"] = d.source;
   return j;
 }
 

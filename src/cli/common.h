@@ -5,21 +5,40 @@
 #include <string>
 
 #include "image/compare.h"
+#include "scene/file.h"
 #include "scene/scene.h"
 
 namespace ffc::cli {
 
-// --scene, --shade, --normals, --depth, --size, --cam-angle, --cam-height, --backend. Options left
-// out keep the built-in scene's defaults.
+// --scene, --shade, --normals, --depth, --size, --cam-angle, --cam-height, --backend.
+// --scene is a built-in scene (cube, icosphere) or a TOML scene file (a path ending in .toml).
+// Options left out keep the built-in scene's defaults or the file's values; given, they override:
+// --shade the shade model, --normals every mesh's normals, --depth every icosphere's depth, --size
+// the framebuffer. --cam-angle and --cam-height move the built-in cube's camera only.
 struct SceneOptions {
   std::string scene = "cube", shade, normals, size, backend = "mesa";
   int depth = -1;
   double cam_angle = 0, cam_height = 1;
+  const CLI::Option* cam_angle_option = nullptr;   // set by add_to: whether the camera was moved
+  const CLI::Option* cam_height_option = nullptr;
   void add_to(CLI::App* app, bool with_shade_and_normals = true);
-  scene::Spec spec() const;  // throws std::invalid_argument for a bad value
+  bool is_file() const { return scene::is_scene_file(scene); }
+  // A built-in scene with the options applied. Throws std::invalid_argument for a bad value or a
+  // scene file (use description()).
+  scene::Spec spec() const;
+  // The scene to draw, built in or read from its file, with the options applied. Throws
+  // std::invalid_argument for a bad value, scene::FileError for a bad scene file.
+  scene::Description description() const;
+  // to_json(d), plus the built-in cube's camera options.
+  nlohmann::json json(const scene::Description& d) const;
 };
 
+// "face", "average", ... when every mesh has the same normal source, otherwise "mixed".
+std::string normals_of(const scene::Description& d);
+
 nlohmann::json to_json(const scene::Spec& s);
+// {scene, shade, normals, width, height}, depth when a mesh is an icosphere, file when read from one.
+nlohmann::json to_json(const scene::Description& d);
 nlohmann::json to_json(const image::Diff& d);
 void print_json(const nlohmann::json& j);
 

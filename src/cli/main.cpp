@@ -5,6 +5,8 @@
 
 namespace ffc::cli {
 void add_check(CLI::App& app);  // check.cpp
+void add_report(CLI::App& app);  // report.cpp
+void add_stress(CLI::App& app);  // stress.cpp
 }
 
 int main(int argc, char** argv) {
@@ -15,6 +17,8 @@ int main(int argc, char** argv) {
   ffc::cli::add_compare(app);
   ffc::cli::add_shading(app);
   ffc::cli::add_check(app);
+  ffc::cli::add_report(app);
+  ffc::cli::add_stress(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

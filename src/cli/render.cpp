@@ -1,4 +1,4 @@
-// ffcompat render: one built-in scene through one backend, to a PNG.
+// ffcompat render: one scene (built in or from a scene file) through one backend, to a PNG.
 #include <iostream>
 #include <memory>
 
@@ -7,7 +7,7 @@
 namespace ffc::cli {
 
 void add_render(CLI::App& app) {
-  auto* cmd = app.add_subcommand("render", "Render a built-in scene to a PNG");
+  auto* cmd = app.add_subcommand("render", "Render a scene (built in or a .toml file) to a PNG");
   auto opts = std::make_shared<SceneOptions>();
   auto out = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
@@ -15,18 +15,18 @@ void add_render(CLI::App& app) {
   cmd->add_option("--out", *out, "PNG file to write")->required();
   cmd->add_flag("--json", *json, "Print the result as JSON");
   cmd->callback([=] {
-    const scene::Spec spec = opts->spec();
+    const scene::Description desc = opts->description();
     auto backend = backends::make(opts->backend);
-    image::write_png(*out, scene::render(spec, *backend));
-    nlohmann::json j = to_json(spec);
+    image::write_png(*out, scene::render(desc, *backend));
+    nlohmann::json j = opts->json(desc);
     j["backend"] = backend->name();
     j["out"] = *out;
     if (*json)
       print_json(j);
     else
-      std::cout << "wrote " << *out << " (" << spec.name << ", " << spec.width << "x" << spec.height
-                << ", GL_" << (spec.shade == scene::Shade::Flat ? "FLAT" : "SMOOTH") << ", "
-                << mesh::to_string(spec.normals) << " normals, " << backend->name() << ")\n";
+      std::cout << "wrote " << *out << " (" << desc.name << ", " << desc.width << "x" << desc.height
+                << ", GL_" << (desc.shade == scene::Shade::Flat ? "FLAT" : "SMOOTH") << ", "
+                << normals_of(desc) << " normals, " << backend->name() << ")\n";
   });
 }
 

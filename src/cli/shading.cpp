@@ -29,17 +29,18 @@ void add_shading(CLI::App& app) {
         {scene::Shade::Smooth, mesh::NormalSource::Average}};
     std::map<std::string, image::Image> pics;
     nlohmann::json j = {{"backend", backend->name()}, {"images", nlohmann::json::object()}};
-    scene::Spec spec = opts->spec();
+    const scene::Description desc = opts->description();
     for (auto [shade, normals] : ways) {
-      spec.shade = shade;
-      spec.normals = normals;
+      scene::Description d = desc;
+      d.shade = shade;
+      for (auto& o : d.objects) o.normals = normals, o.file_normals = false;
       const std::string key = std::string(scene::to_string(shade)) + "_" + mesh::to_string(normals);
-      pics[key] = scene::render(spec, *backend);
+      pics[key] = scene::render(d, *backend);
       const std::string path = (fs::path(*out) / (key + ".png")).string();
       image::write_png(path, pics[key]);
       j["images"][key] = path;
     }
-    j["scene"] = to_json(spec);
+    j["scene"] = opts->json(desc);
     j["scene"].erase("shade");
     j["scene"].erase("normals");
     // flat vs smooth for each normal source, then face vs averaged normals under GL_SMOOTH.
