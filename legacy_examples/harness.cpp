@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "check/vertex_check.h"
 #include "gl/dispatch.h"
 #include "image/image.h"
 
@@ -43,10 +44,28 @@ int key_from_name(const std::string& name) {
 namespace {
 
 struct Options {
-  bool headless = false, json = false;
+  bool headless = false, json = false, check = false;
   std::string out, keys, backend = "mesa";
   int frames = 0;
 };
+
+// The example's frame through Mesa's feedback and ours, vertex by vertex (ffcompat check's
+// vertex level, for a program that is not a scene).
+int check_vertices(const Example& ex, const Options& opt) {
+  const check::VertexReport r = check::compare_vertices(ex.width, ex.height, [&] { ex.draw(ex.width, ex.height); });
+  const bool pass = r.max_abs <= 1e-5 || !r.known_mesa_deviations.empty();
+  if (opt.json)
+    std::cout << nlohmann::ordered_json{{"example", ex.name}, {"vertices", r.vertices},      {"max_abs", r.max_abs},
+                                        {"rms", r.rms},       {"max_abs_double", r.max_abs_double},
+                                        {"max_position_px", r.max_position},
+                                        {"known_mesa_deviations", r.known_mesa_deviations}, {"pass", pass}}
+                     .dump()
+              << std::endl;
+  else
+    std::cout << ex.name << ": " << r.vertices << " vertices, float vs Mesa max " << r.max_abs << ", double vs Mesa max "
+              << r.max_abs_double << (pass ? " PASS" : " FAIL") << std::endl;
+  return pass ? 0 : 2;
+}
 
 int render_headless(const Example& ex, const Options& opt) {
   auto backend = backends::make(opt.backend);  // throws for an unknown name
@@ -126,10 +145,13 @@ int run_example(int argc, char** argv, const Example& ex) {
   app.add_option("--out", opt.out, "PNG file written by --headless")->needs(headless);
   app.add_option("--backend", opt.backend, "Renderer for --headless")->capture_default_str();
   app.add_option("--keys", opt.keys, "Space-separated keys pressed before drawing, e.g. \"3 3 2\"");
-  app.add_flag("--json", opt.json, "Print what --headless wrote as JSON")->needs(headless);
+  auto* check = app.add_flag("--check", opt.check, "Compare our lit vertices with Mesa's (feedback mode)")
+                    ->excludes(headless);
+  app.add_flag("--json", opt.json, "Print what --headless wrote (or --check found) as JSON");
   app.add_option("--frames", opt.frames, "Close the window after N frames (0: when closed)")
       ->check(CLI::NonNegativeNumber)
-      ->excludes(headless);
+      ->excludes(headless)
+      ->excludes(check);
   if (ex.add_options) ex.add_options(app);
   try {
     app.parse(argc, argv);
@@ -152,6 +174,11 @@ int run_example(int argc, char** argv, const Example& ex) {
     if (ex.on_key)
       for (int k : keys) ex.on_key(k);
 
+    if (opt.check) return check_vertices(ex, opt);
+    if (opt.json && !opt.headless) {
+      std::cerr << ex.name << ": --json goes with --headless or --check\n";
+      return 1;
+    }
     if (!opt.headless) return run_window(ex, opt);
     if (opt.out.empty()) {
       std::cerr << ex.name << ": --headless needs --out F.png\n";

@@ -21,6 +21,16 @@ void require_same_shape(const std::vector<FeedbackPrimitive>& a, const std::vect
                                " differs in kind or size between Mesa and " + what);
 }
 
+const FeedbackVertex& nearest(const FeedbackPrimitive& p, const FeedbackVertex& to) {
+  size_t best = 0;
+  double best_d = INFINITY;
+  for (size_t i = 0; i < p.vertices.size(); ++i) {
+    const double d = glm::length(p.vertices[i].position - to.position);
+    if (d < best_d) best = i, best_d = d;
+  }
+  return p.vertices[best];
+}
+
 }  // namespace
 
 VertexReport compare_vertices(int width, int height, const std::function<void()>& draw) {
@@ -38,7 +48,10 @@ VertexReport compare_vertices(int width, int height, const std::function<void()>
   double sum_sq = 0, sum_sq_d = 0, ch_sq[4] = {0, 0, 0, 0};
   for (size_t p = 0; p < ref.size(); ++p)
     for (size_t v = 0; v < ref[p].vertices.size(); ++v) {
-      const FeedbackVertex &m = ref[p].vertices[v], &f = ours_f[p].vertices[v], &d = ours_d[p].vertices[v];
+      // Within a primitive, pair by window position: a clipped polygon may start its fan at
+      // another vertex than Mesa's clipper does, and that is not a lighting difference.
+      const FeedbackVertex& m = ref[p].vertices[v];
+      const FeedbackVertex &f = nearest(ours_f[p], m), &d = nearest(ours_d[p], m);
       ++r.vertices;
       r.max_position = std::max(r.max_position, glm::length(glm::dvec2(m.position - f.position)));
       for (int c = 0; c < 4; ++c) {
@@ -46,6 +59,7 @@ VertexReport compare_vertices(int width, int height, const std::function<void()>
         r.channel[c].max_abs = std::max(r.channel[c].max_abs, ef);
         ch_sq[c] += ef * ef;
         sum_sq += ef * ef, sum_sq_d += ed * ed;
+        if (ef > r.max_abs) r.worst_primitive = p, r.worst_vertex = v, r.worst_mesa = m, r.worst_ours = f;
         r.max_abs = std::max(r.max_abs, ef);
         r.max_abs_double = std::max(r.max_abs_double, ed);
         r.max_abs_float_vs_double = std::max(r.max_abs_float_vs_double, std::abs(f.color[c] - d.color[c]));

@@ -19,6 +19,9 @@ struct VertexReport {
   double max_abs_float_vs_double = 0;         // how far our float path is from the reference
   ChannelStats channel[4];                    // float path, per channel (r, g, b, a)
   double max_position = 0;                    // window-position disagreement, pixels
+  // Where the float path is furthest from Mesa: primitive, vertex, and both colours.
+  size_t worst_primitive = 0, worst_vertex = 0;
+  FeedbackVertex worst_mesa{}, worst_ours{};
   std::vector<std::string> known_mesa_deviations;
 };
 

@@ -24,14 +24,14 @@ void add_check(CLI::App& app) {
   cmd->add_option("--out", *out, "pixel: where a failure writes mesa.png, soft.png and diff.png")->capture_default_str();
   cmd->add_flag("--json", *json, "Print the report as JSON");
   cmd->callback([=] {
-    const scene::Spec spec = opts->spec();
+    const scene::Description desc = opts->description();
     if (*level == "pixel") {
       auto mesa = backends::make("mesa"), soft = backends::make("soft");
-      const image::Image a = scene::render(spec, *mesa), b = scene::render(spec, *soft);
+      const image::Image a = scene::render(desc, *mesa), b = scene::render(desc, *soft);
       const image::Diff d = image::compare(a, b);
       const bool pass = d.max_diff <= *max_steps;
       nlohmann::json j = to_json(d);
-      j["level"] = "pixel", j["scene"] = to_json(spec), j["max_allowed"] = *max_steps, j["pass"] = pass;
+      j["level"] = "pixel", j["scene"] = opts->json(desc), j["max_allowed"] = *max_steps, j["pass"] = pass;
       if (!pass) {  // the evidence, for a person to look at
         namespace fs = std::filesystem;
         fs::create_directories(*out);
@@ -49,13 +49,13 @@ void add_check(CLI::App& app) {
       if (!pass) throw CLI::RuntimeError(2);
       return;
     }
-    const check::VertexReport r = check::compare_vertices(spec.width, spec.height, [&] { scene::draw(spec); });
+    const check::VertexReport r = check::compare_vertices(desc.width, desc.height, [&] { scene::draw(desc); });
     const bool pass = r.max_abs <= *tolerance || !r.known_mesa_deviations.empty();
     if (*json) {
       nlohmann::json ch = nlohmann::json::array();
       for (const auto& c : r.channel) ch.push_back({{"max_abs", c.max_abs}, {"rms", c.rms}});
       nlohmann::json j = {{"level", "vertex"},
-                          {"scene", to_json(spec)},
+                          {"scene", opts->json(desc)},
                           {"vertices", r.vertices},
                           {"max_abs", r.max_abs},
                           {"rms", r.rms},
@@ -64,6 +64,9 @@ void add_check(CLI::App& app) {
                           {"max_abs_float_vs_double", r.max_abs_float_vs_double},
                           {"channels", ch},
                           {"max_position_px", r.max_position},
+                          {"worst", {{"primitive", r.worst_primitive}, {"vertex", r.worst_vertex},
+                                     {"mesa", {r.worst_mesa.color.r, r.worst_mesa.color.g, r.worst_mesa.color.b, r.worst_mesa.color.a}},
+                                     {"ours", {r.worst_ours.color.r, r.worst_ours.color.g, r.worst_ours.color.b, r.worst_ours.color.a}}}},
                           {"known_mesa_deviations", r.known_mesa_deviations},
                           {"tolerance", *tolerance},
                           {"pass", pass}};
@@ -75,6 +78,13 @@ void add_check(CLI::App& app) {
       std::printf("float  vs Mesa: max %.3g, rms %.3g\ndouble vs Mesa: max %.3g, rms %.3g\n"
                   "window positions agree within %.3g px\n",
                   r.max_abs, r.rms, r.max_abs_double, r.rms_double, r.max_position);
+      if (r.max_abs > 0) {
+        const auto &m = r.worst_mesa, &o = r.worst_ours;
+        std::printf("largest at primitive %zu vertex %zu, window (%.2f, %.2f): Mesa (%.6f %.6f %.6f %.6f), ours "
+                    "(%.6f %.6f %.6f %.6f)\n",
+                    r.worst_primitive, r.worst_vertex, m.position.x, m.position.y, m.color.r, m.color.g, m.color.b,
+                    m.color.a, o.color.r, o.color.g, o.color.b, o.color.a);
+      }
       for (const auto& d : r.known_mesa_deviations) std::printf("known Mesa deviation: %s\n", d.c_str());
       std::printf("%s (tolerance %g)\n", pass ? "PASS" : "FAIL", *tolerance);
     }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <functional>
 #include <thread>
 
 namespace ffc::state {
@@ -748,14 +749,27 @@ void Context::process_vertex(const glm::dvec4& obj) {
     v.clip = projection_.back() * eye;
   }
   if (!lighting_) {
-    v.front = v.back = glm::clamp(color_, 0.0, 1.0);
+    // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
+    for (int k = 0; k < 4; ++k) v.front[k] = !(color_[k] < 1) ? 1.0 : color_[k] > 0 ? color_[k] : 0.0;
+    v.back = v.front;
     v.front_sec = v.back_sec = glm::dvec4(0);
   } else {
     if (constants_dirty_) prepare_lighting();
     // Normals transform by the inverse transpose of the modelview's upper 3x3.
     if (mv != normal_matrix_of_) {  // the inverse is per modelview, not per vertex
       normal_matrix_of_ = mv;
-      normal_matrix_ = glm::inverse(glm::dmat3(mv));
+      // A singular modelview has no inverse: the transformed normal is undefined and the inverse's
+      // entries arbitrary (2.11.3). Mesa (m_matrix.c) takes the identity; ours too, not infinities
+      // or rounding noise. Singular: |det| within 1e-14 of its largest value for the rows' (or the
+      // columns') lengths (Hadamard), a test that does not depend on scale (1e-30 I inverts).
+      const glm::dmat3 m3(mv);
+      double rows = 1, cols = 1;
+      for (int i = 0; i < 3; ++i)
+        cols *= glm::length(m3[i]), rows *= glm::length(glm::dvec3(m3[0][i], m3[1][i], m3[2][i]));
+      const bool singular = !(std::abs(glm::determinant(m3)) > 1e-14 * std::min(rows, cols));
+      normal_matrix_ = singular ? glm::dmat3(1) : glm::inverse(m3);
+      for (int k = 0; k < 9; ++k)
+        if (!std::isfinite(normal_matrix_[k / 3][k % 3])) normal_matrix_ = glm::dmat3(1);
     }
     const glm::dmat3& inv = normal_matrix_;
     glm::dvec3 n = normal_ * inv;  // row vector times M^-1
@@ -938,7 +952,14 @@ void Context::flush_primitive(bool) {
     else feedback_overflow_ = true;
     ++feedback_count_;
   };
-  auto emit_feedback = [&](GLenum kind, const std::vector<raster::WindowVertex>& w) {
+  std::function<void(GLenum, const std::vector<raster::WindowVertex>&)> emit_feedback;
+  emit_feedback = [&](GLenum kind, const std::vector<raster::WindowVertex>& w) {
+    if (kind == GL_POLYGON_TOKEN && w.size() > 3) {
+      // A clipped triangle goes back as Mesa's clipper emits it: a fan of triangles
+      // (v[i], v[i+1], v[0]), the first vertex last.
+      for (size_t i = 1; i + 1 < w.size(); ++i) emit_feedback(kind, {w[i], w[i + 1], w[0]});
+      return;
+    }
     const size_t n = kind == GL_POINT_TOKEN ? 1 : w.size();
     put(kind);
     if (kind == GL_POLYGON_TOKEN) put(double(n));

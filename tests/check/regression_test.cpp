@@ -5,6 +5,7 @@
 #include "backends/backend.h"
 #include "check/vertex_check.h"
 #include "image/compare.h"
+#include "scene/file.h"
 #include "scene/scene.h"
 #include "state/context.h"
 
@@ -58,6 +59,24 @@ TEST_P(BuiltIn, PixelsWithinOneStepOfMesa) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BuiltIn, ::testing::ValuesIn(cases()),
                          [](const auto& info) { return info.param.name; });
+
+// Every shipped scene file: the same goals (clipped floors included: feedback pairs the fan
+// triangles a clipped polygon becomes, vertex by window position).
+class Shipped : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Shipped, VertexColoursWithin1e5AndPixelsWithinOneStep) {
+  const scene::Description d = scene::load_file(std::string(FFCOMPAT_SOURCE_DIR) + "/scenes/" + GetParam() + ".toml");
+  const check::VertexReport r = check::compare_vertices(d.width, d.height, [&] { scene::draw(d); });
+  EXPECT_GT(r.vertices, 0u);
+  EXPECT_LE(r.max_abs, 1e-5);
+  EXPECT_LE(r.max_position, 1e-4);
+  auto mesa = backends::make("mesa"), soft = backends::make("soft");
+  EXPECT_LE(image::compare(scene::render(d, *mesa), scene::render(d, *soft)).max_diff, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, Shipped,
+                         ::testing::Values("cube", "icosphere", "material_grid", "spotlight", "two_sided",
+                                           "color_material", "eight_lights"));
 
 TEST(ThreadCount, DoesNotChangeThePicture) {
   // Bands of rows go to threads; a pixel is only ever written by one, in primitive order.
