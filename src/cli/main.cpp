@@ -5,8 +5,7 @@
 
 namespace ffc::cli {
 void add_check(CLI::App& app);  // check.cpp
-void add_report(CLI::App& app);  // report.cpp
-void add_stress(CLI::App& app);  // stress.cpp
+void add_bench(CLI::App& app);  // bench.cpp
 }
 
 int main(int argc, char** argv) {
@@ -17,8 +16,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_compare(app);
   ffc::cli::add_shading(app);
   ffc::cli::add_check(app);
-  ffc::cli::add_report(app);
-  ffc::cli::add_stress(app);
+  ffc::cli::add_bench(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

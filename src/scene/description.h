@@ -11,6 +11,7 @@
 // lighting and the depth test are on and the camera looks at the origin from (0, 0, 5).
 #pragma once
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -201,5 +202,9 @@ DrawPath resolved_draw_path(const Object& o);
 // scene transforms and each object in its own glPushMatrix. Builds the meshes before the first GL
 // call, so a mesh that cannot be built throws without drawing anything.
 void draw(const Description& d);
+
+// Builds the meshes now and returns what issues one frame of `d` with them: for drawing the same
+// scene many times (benchmarks) without building meshes inside the timed frames.
+std::function<void()> frame(const Description& d);
 
 }  // namespace ffc::scene

@@ -264,6 +264,10 @@ void issue(const Description& d, const std::vector<Prepared>& prepared) {
 
 void draw(const Description& d) { issue(d, prepare(d)); }
 
+std::function<void()> frame(const Description& d) {
+  return [d, prepared = prepare(d)] { issue(d, prepared); };
+}
+
 image::Image render(const Description& d, backends::Backend& backend) {
   const std::vector<Prepared> prepared = prepare(d);  // a mesh that cannot be built throws here
   backend.begin(d.width, d.height);

@@ -1,0 +1,67 @@
+// ffcompat bench: frames of one scene on each backend in turn, in one run; the median time per
+// frame of each and their ratio. A benchmark, not a test: read the ratio, not a lone time.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "cli/common.h"
+
+namespace ffc::cli {
+
+void add_bench(CLI::App& app) {
+  auto* cmd = app.add_subcommand("bench", "Median time per frame of a scene on each backend, and the speed-up");
+  auto opts = std::make_shared<SceneOptions>();
+  auto backends_list = std::make_shared<std::string>("mesa,soft");
+  auto frames = std::make_shared<int>(20);
+  auto json = std::make_shared<bool>(false);
+  opts->add_to(cmd);
+  cmd->add_option("--backends", *backends_list, "Comma-separated: mesa, soft, soft-double")->capture_default_str();
+  cmd->add_option("--frames", *frames, "Timed frames per backend (after one warm-up frame)")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_flag("--json", *json, "Print {median_ms: {backend: ms}, speedup, ...}");
+  cmd->callback([=] {
+    const scene::Description d = opts->description();
+    const std::function<void()> issue = scene::frame(d);  // meshes built once, outside the timing
+    std::vector<std::string> names;
+    std::stringstream list(*backends_list);
+    for (std::string n; std::getline(list, n, ',');) names.push_back(n);
+    nlohmann::json medians = nlohmann::json::object(), all = nlohmann::json::object();
+    std::map<std::string, double> median;
+    for (const std::string& name : names) {
+      auto backend = backends::make(name);
+      backend->begin(d.width, d.height);
+      issue();  // warm-up: Mesa compiles its fixed-function programs on the first frame
+      (void)backend->read();
+      std::vector<double> ms;
+      for (int f = 0; f < *frames; ++f) {
+        const auto t0 = std::chrono::steady_clock::now();
+        issue();
+        (void)backend->read();  // finishes the frame (glFinish for Mesa)
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      }
+      std::vector<double> sorted = ms;
+      std::sort(sorted.begin(), sorted.end());
+      median[name] = sorted[sorted.size() / 2];
+      medians[name] = median[name];
+      all[name] = {{"min_ms", sorted.front()}, {"max_ms", sorted.back()}};
+    }
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    nlohmann::json j = {{"scene", opts->json(d)}, {"frames", *frames}, {"median_ms", medians},
+                        {"spread", all}, {"peak_rss_mb", ru.ru_maxrss / 1024.0}};
+    if (median.count("mesa") && median.count("soft")) j["speedup"] = median["mesa"] / median["soft"];
+    if (*json) return print_json(j);
+    std::printf("%-12s %12s\n", "backend", "median ms");
+    for (const auto& n : names) std::printf("%-12s %12.3f\n", n.c_str(), median[n]);
+    if (j.contains("speedup")) std::printf("speedup (mesa / soft): %.2fx\n", j["speedup"].get<double>());
+    std::printf("%d frames each, %dx%d; peak RSS %.0f MB\n", *frames, d.width, d.height, ru.ru_maxrss / 1024.0);
+  });
+}
+
+}  // namespace ffc::cli
