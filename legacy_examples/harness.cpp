@@ -105,6 +105,9 @@ int run_window(const Example& ex, const Options& opt) {
     return 1;
   }
   glfwMakeContextCurrent(window);
+  // --backend soft: frames come from our renderer and are shown with glDrawPixels.
+  std::unique_ptr<backends::Backend> soft;
+  if (opt.backend != "mesa") soft = backends::make(opt.backend);
   if (const auto missing = gl::load(glfw_loader); !missing.empty()) {
     glfwTerminate();
     std::cerr << ex.name << ": the window's GL context does not provide " << missing.front() << "\n";
@@ -118,8 +121,24 @@ int run_window(const Example& ex, const Options& opt) {
       glfwPollEvents();
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
-      glViewport(0, 0, w, h);
-      ex.draw(w, h);
+      if (soft) {
+        // Our renderer draws the frame; the window's GL only shows the picture.
+        soft->begin(w, h);
+        ex.draw(w, h);
+        image::Image img = soft->read();
+        for (int y = 0; y < h / 2; ++y)  // glDrawPixels wants the bottom row first
+          std::swap_ranges(img.at(0, y), img.at(0, y) + size_t(w) * 4, img.at(0, h - 1 - y));
+        gl::load(glfw_loader);
+        glViewport(0, 0, w, h);
+        glMatrixMode(GL_PROJECTION), glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW), glLoadIdentity();
+        glDisable(GL_DEPTH_TEST), glDisable(GL_LIGHTING);
+        glRasterPos2f(-1, -1);
+        glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+      } else {
+        glViewport(0, 0, w, h);
+        ex.draw(w, h);
+      }
       glfwSwapBuffers(window);
     }
   } catch (...) {
@@ -143,7 +162,8 @@ int run_example(int argc, char** argv, const Example& ex) {
   Options opt;
   auto* headless = app.add_flag("--headless", opt.headless, "Render one frame offscreen and write --out");
   app.add_option("--out", opt.out, "PNG file written by --headless")->needs(headless);
-  app.add_option("--backend", opt.backend, "Renderer for --headless")->capture_default_str();
+  app.add_option("--backend", opt.backend, "Renderer: mesa (in a window: the window's GL) or soft")
+      ->capture_default_str();
   app.add_option("--keys", opt.keys, "Space-separated keys pressed before drawing, e.g. \"3 3 2\"");
   auto* check = app.add_flag("--check", opt.check, "Compare our lit vertices with Mesa's (feedback mode)")
                     ->excludes(headless);

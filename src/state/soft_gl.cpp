@@ -119,11 +119,21 @@ void APIENTRY VertexPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FW
 void APIENTRY Viewport(GLint x, GLint y, GLsizei w, GLsizei h) { FWD(Viewport(x, y, w, h)); }
 #undef FWD
 
+// Putting a finished picture on a window is not this context's job (it has none): these names
+// resolve to nothing here.
+constexpr std::nullptr_t DrawPixels = nullptr, RasterPos2f = nullptr;
+
+template <typename F>
+void* entry(F* f) {
+  return reinterpret_cast<void*>(f);
+}
+void* entry(std::nullptr_t) { return nullptr; }
+
 }  // namespace
 
 void* proc_address(const char* name) {
 #define FFC_GL_FUNCTION(ret, fn, params) \
-  if (std::strcmp(name, "gl" #fn) == 0) return reinterpret_cast<void*>(&fn);
+  if (std::strcmp(name, "gl" #fn) == 0) return entry(fn);
 #include "gl/gl_functions.inc"
 #undef FFC_GL_FUNCTION
   // Entry points outside the dispatch's list, for callers that load them by name.
