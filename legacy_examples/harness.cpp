@@ -10,6 +10,7 @@
 
 #include "backends/backend.h"
 #include "check/vertex_check.h"
+#include "image/compare.h"
 #include "gl/dispatch.h"
 #include "image/image.h"
 
@@ -53,17 +54,30 @@ struct Options {
 // vertex level, for a program that is not a scene).
 int check_vertices(const Example& ex, const Options& opt) {
   const check::VertexReport r = check::compare_vertices(ex.width, ex.height, [&] { ex.draw(ex.width, ex.height); });
-  const bool pass = r.max_abs <= 1e-5 || !r.known_mesa_deviations.empty();
+  // And the pictures: no pixel more than one 8-bit step apart.
+  image::Image pictures[2];
+  const char* names[2] = {"mesa", "soft"};
+  for (int i = 0; i < 2; ++i) {
+    auto backend = backends::make(names[i]);
+    backend->begin(ex.width, ex.height);
+    ex.draw(ex.width, ex.height);
+    pictures[i] = backend->read();
+  }
+  const image::Diff d = image::compare(pictures[0], pictures[1]);
+  const bool pass = (r.max_abs <= 1e-5 || !r.known_mesa_deviations.empty()) && d.max_diff <= 1;
   if (opt.json)
     std::cout << nlohmann::ordered_json{{"example", ex.name}, {"vertices", r.vertices},      {"max_abs", r.max_abs},
                                         {"rms", r.rms},       {"max_abs_double", r.max_abs_double},
                                         {"max_position_px", r.max_position},
-                                        {"known_mesa_deviations", r.known_mesa_deviations}, {"pass", pass}}
+                                        {"known_mesa_deviations", r.known_mesa_deviations},
+                                        {"pixel_max_diff", d.max_diff}, {"pixel_differing_share", d.differing_share},
+                                        {"pass", pass}}
                      .dump()
               << std::endl;
   else
     std::cout << ex.name << ": " << r.vertices << " vertices, float vs Mesa max " << r.max_abs << ", double vs Mesa max "
-              << r.max_abs_double << (pass ? " PASS" : " FAIL") << std::endl;
+              << r.max_abs_double << "; pixels max " << d.max_diff << " steps on " << 100 * d.differing_share << "%"
+              << (pass ? " PASS" : " FAIL") << std::endl;
   return pass ? 0 : 2;
 }
 
@@ -165,7 +179,7 @@ int run_example(int argc, char** argv, const Example& ex) {
   app.add_option("--backend", opt.backend, "Renderer: mesa (in a window: the window's GL) or soft")
       ->capture_default_str();
   app.add_option("--keys", opt.keys, "Space-separated keys pressed before drawing, e.g. \"3 3 2\"");
-  auto* check = app.add_flag("--check", opt.check, "Compare our lit vertices with Mesa's (feedback mode)")
+  auto* check = app.add_flag("--check", opt.check, "Compare our lit vertices (feedback) and pixels with Mesa's")
                     ->excludes(headless);
   app.add_flag("--json", opt.json, "Print what --headless wrote (or --check found) as JSON");
   app.add_option("--frames", opt.frames, "Close the window after N frames (0: when closed)")
