@@ -6,6 +6,7 @@
 namespace ffc::cli {
 void add_check(CLI::App& app);  // check.cpp
 void add_bench(CLI::App& app);  // bench.cpp
+void add_report(CLI::App& app);  // report.cpp
 }
 
 int main(int argc, char** argv) {
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_shading(app);
   ffc::cli::add_check(app);
   ffc::cli::add_bench(app);
+  ffc::cli::add_report(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

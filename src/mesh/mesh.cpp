@@ -1,5 +1,9 @@
 #include "mesh/mesh.h"
 
+#include "mesh/normals.h"
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace ffc::mesh {
@@ -8,7 +12,10 @@ NormalSource parse_normal_source(const std::string& s) {
   if (s == "face") return NormalSource::Face;
   if (s == "average") return NormalSource::Average;
   if (s == "sphere") return NormalSource::Sphere;
-  throw std::invalid_argument("unknown normal source '" + s + "' (face, average or sphere)");
+  if (s == "area") return NormalSource::Area;
+  if (s == "angle") return NormalSource::Angle;
+  if (s == "max") return NormalSource::Max;
+  throw std::invalid_argument("unknown normal source '" + s + "' (face, average, sphere, area, angle or max)");
 }
 
 const char* to_string(NormalSource n) {
@@ -16,6 +23,9 @@ const char* to_string(NormalSource n) {
     case NormalSource::Face: return "face";
     case NormalSource::Average: return "average";
     case NormalSource::Sphere: return "sphere";
+    case NormalSource::Area: return "area";
+    case NormalSource::Angle: return "angle";
+    case NormalSource::Max: return "max";
   }
   return "?";
 }
@@ -40,8 +50,46 @@ Mesh build(const std::vector<Vec3>& positions, const std::vector<Tri>& triangles
   return m;
 }
 
+namespace {
+
+// v scaled by a power of two (exact) so that its largest component is in [0.5, 1); 0 stays 0.
+OpenMesh::Vec3d scaled(const OpenMesh::Vec3d& v) {
+  const double big = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  if (!(big > 0) || !std::isfinite(big)) return v;
+  int e;
+  std::frexp(big, &e);
+  return OpenMesh::Vec3d(std::ldexp(v[0], -e), std::ldexp(v[1], -e), std::ldexp(v[2], -e));
+}
+
+// OpenMesh's face normal, (p2 - p1) x (p0 - p1) times 1/|.|, with the edges and then the cross
+// product scaled by powers of two first. Scaling by 2^k is exact, so wherever OpenMesh's own
+// computation neither overflows nor underflows the bits are the same; beyond (coordinates above
+// ~1e77, where its squared norm overflows to a zero normal, or below ~1e-77, where the squares
+// underflow) this one stays unit. Degenerate or non-finite triangles get (0, 0, 0).
+OpenMesh::Vec3d face_normal(const OpenMesh::Vec3d& p0, const OpenMesh::Vec3d& p1, const OpenMesh::Vec3d& p2) {
+  const OpenMesh::Vec3d a = p2 - p1, b = p0 - p1;
+  // One scale for both edges (the larger one's), so their cross product keeps its direction.
+  const double big = std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2]), std::abs(b[0]), std::abs(b[1]),
+                               std::abs(b[2])});
+  if (!(big > 0) || !std::isfinite(big)) return OpenMesh::Vec3d(0, 0, 0);
+  int e;
+  std::frexp(big, &e);
+  const OpenMesh::Vec3d as(std::ldexp(a[0], -e), std::ldexp(a[1], -e), std::ldexp(a[2], -e));
+  const OpenMesh::Vec3d bs(std::ldexp(b[0], -e), std::ldexp(b[1], -e), std::ldexp(b[2], -e));
+  OpenMesh::Vec3d n = scaled(OpenMesh::cross(as, bs));
+  const double length = n.norm();
+  if (!(length > 0) || !std::isfinite(length)) return OpenMesh::Vec3d(0, 0, 0);
+  return n *= (1.0 / length);
+}
+
+}  // namespace
+
 void update_normals(Mesh& m) {
-  m.update_face_normals();
+  for (auto f : m.faces()) {
+    auto v = m.fv_iter(f);
+    const OpenMesh::Vec3d p0 = m.point(*v), p1 = m.point(*++v), p2 = m.point(*++v);
+    m.set_normal(f, face_normal(p0, p1, p2));
+  }
   m.update_vertex_normals();
 }
 
@@ -54,10 +102,13 @@ Layout layout(const Mesh& m, NormalSource source) {
       for (auto v : m.fv_range(f)) l.vertices.push_back({v.idx(), vec(m.point(v)), vec(m.normal(f))});
     return l;
   }
+  const bool weighted = source == NormalSource::Area || source == NormalSource::Angle || source == NormalSource::Max;
+  const std::vector<Vec3> normals = weighted ? vertex_normals(m, source) : std::vector<Vec3>();
   l.vertices.reserve(m.n_vertices());
   for (auto v : m.vertices())
     l.vertices.push_back({v.idx(), vec(m.point(v)),
-                          vec(source == NormalSource::Average ? m.normal(v) : m.point(v).normalized())});
+                          weighted ? normals[size_t(v.idx())]
+                                   : vec(source == NormalSource::Average ? m.normal(v) : m.point(v).normalized())});
   l.indices.reserve(m.n_faces() * 3);
   for (auto f : m.faces())
     for (auto v : m.fv_range(f)) l.indices.push_back(uint32_t(v.idx()));

@@ -21,7 +21,10 @@ using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 using Vec3 = std::array<double, 3>;
 using Tri = std::array<int, 3>;
 
-enum class NormalSource { Face, Average, Sphere };
+// Face: per triangle corner; Average: OpenMesh's unweighted average of the incident face normals;
+// Sphere: exact for the icosphere (the position, normalised); Area, Angle, Max: the weighted
+// averages of mesh/normals.h.
+enum class NormalSource { Face, Average, Sphere, Area, Angle, Max };
 NormalSource parse_normal_source(const std::string& s);  // throws std::invalid_argument
 const char* to_string(NormalSource n);
 
@@ -34,7 +37,8 @@ void update_normals(Mesh& m);
 
 // The vertices a draw call sends, in double. Face normals need unshared corners (one vertex per
 // triangle corner, in triangle order, drawn with glDrawArrays); the other sources share the mesh's
-// vertices (drawn with glDrawElements over `indices`).
+// vertices (drawn with glDrawElements over `indices`). Average reads the mesh's vertex normals;
+// Area, Angle and Max are computed from the positions (mesh/normals.h).
 struct Layout {
   struct Vertex {
     int source;  // the mesh vertex it came from
