@@ -11,7 +11,8 @@ void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals) {
   if (with_shade_and_normals) {
     app->add_option("--shade", shade, "glShadeModel: flat or smooth (default: smooth, or the file's)");
     app->add_option("--normals", normals,
-                    "Normals: face, average (OpenMesh) or sphere, or file for a mesh file's own "
+                    "Normals: face, average (OpenMesh's), area, angle, max (Max 1999) or sphere, or file for a "
+                    "mesh file's own "
                     "(default: cube face, icosphere sphere, or the file's)");
   }
   app->add_option("--depth", depth, "Icosphere subdivision depth, 0..12 (default 3, or the file's)")->check(CLI::Range(0, 12));

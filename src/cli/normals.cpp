@@ -12,7 +12,7 @@ void add_normals(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   cmd->add_option("--scene", opts->scene, "Scene: cube, icosphere, or a TOML scene file (*.toml)")->capture_default_str();
   cmd->add_option("--depth", opts->depth, "Icosphere subdivision depth (default 3)")->check(CLI::Range(0, 12));
-  cmd->add_option("--normals", opts->normals, "face, average, sphere or file (default: the scene's)");
+  cmd->add_option("--normals", opts->normals, "face, average, area, angle, max, sphere or file (default: the scene's)");
   cmd->add_flag("--json", *json, "Print an array of {vertex, position, normal} rows");
   cmd->callback([=] {
     const scene::Description desc = opts->description();

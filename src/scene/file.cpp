@@ -72,7 +72,7 @@
 //   source = "cube"                 # required: "cube" (the seeds' cube of side 2), "icosphere:N"
 //                                   #   (depth N = 0..12; "icosphere" is depth 3), or a mesh file
 //                                   #   (.obj, .off, .ply, .stl) relative to this file's folder
-//   normals = "face"                # face | average | sphere | file (the file's vertex normals);
+//   normals = "face"                # face | average | area | angle | max | sphere | file (the file's);
 //                                   #   any other name mesh::parse_normal_source knows
 //   draw = "auto"                   # auto | arrays (glDrawArrays) | elements (glDrawElements) |
 //                                   #   immediate (glBegin/glNormal3f/glVertex3f/glEnd);
