@@ -7,6 +7,7 @@ namespace ffc::cli {
 void add_check(CLI::App& app);  // check.cpp
 void add_bench(CLI::App& app);  // bench.cpp
 void add_report(CLI::App& app);  // report.cpp
+void add_stress(CLI::App& app);  // stress.cpp
 }
 
 int main(int argc, char** argv) {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_check(app);
   ffc::cli::add_bench(app);
   ffc::cli::add_report(app);
+  ffc::cli::add_stress(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

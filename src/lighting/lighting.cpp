@@ -17,6 +17,16 @@ V3<T> rgb(const glm::dvec4& c) {
   return V3<T>(T(c.r), T(c.g), T(c.b));
 }
 
+// Clamped to [0,1], a NaN going to 1 as in Mesa's fixed-function clamp (min(max(x, 0), 1) with a
+// NaN-propagating max and a NaN-dropping min): a NaN (inf * 0 from an infinite attenuation, a NaN
+// input; unspecified by GL 2.1, 2.1.1) never leaves the lighting stage.
+template <typename T>
+V4<T> saturate(const V4<T>& v) {
+  V4<T> r;
+  for (int k = 0; k < 4; ++k) r[k] = !(v[k] < T(1)) ? T(1) : v[k] > T(0) ? v[k] : T(0);
+  return r;
+}
+
 bool tracks(const ModelParams& m, unsigned what) {
   return m.cm_mode == what || (m.cm_mode == kAmbientAndDiffuse && (what == kAmbient || what == kDiffuse));
 }
@@ -61,7 +71,9 @@ Prepared<T> prepare(const LightParams (&lights)[8], const MaterialParams (&mat)[
     if (p.spot) {
       const double len = glm::length(l.spot_direction);
       p.spot_dir = len > 0 ? V3<T>(l.spot_direction / len) : V3<T>(0);
-      p.spot_cos = T(std::cos(l.spot_cutoff * M_PI / 180));
+      // cos 90 is 0 exactly (cos(pi/2) rounds to 6e-17): 2.14.1 lights cos >= cos(cutoff), so a
+      // vertex exactly on a 90-degree cone's boundary is lit.
+      p.spot_cos = T(l.spot_cutoff == 90 ? 0.0 : std::cos(l.spot_cutoff * M_PI / 180));
       p.spot_exp = T(l.spot_exponent);
     }
     p.k0 = T(l.constant_attenuation), p.k1 = T(l.linear_attenuation), p.k2 = T(l.quadratic_attenuation);
@@ -146,12 +158,12 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       if (S::spot(L)) {
         const T cos_angle = glm::dot(-vp, L.spot_dir);
         if (cos_angle < L.spot_cos) continue;  // outside the cone: no contribution at all
-        att *= std::pow(std::max(cos_angle, T(0)), L.spot_exp);
+        att *= std::pow(std::max(T(0), cos_angle), L.spot_exp);  // max(0, NaN) is 0, as in Mesa
       }
       const V3<T> amb = track_amb ? L.la * cm : L.amb[f];
       const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];
       const T ndotl = glm::dot(nf, vp);
-      V3<T> sum = amb + std::max(ndotl, T(0)) * dif;
+      V3<T> sum = amb + std::max(T(0), ndotl) * dif;  // a NaN n.L (NaN normal) drops out, as in Mesa
       if (S::specular(key) && ndotl > 0) {
         V3<T> h = L.half;
         if (S::local_viewer(key) || S::local(L)) {
@@ -160,7 +172,7 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
           h = hl > 0 ? h / hl : V3<T>(0);
         }
         const V3<T> spe = track_spe ? L.ls * cm : L.spe[f];
-        const V3<T> s = std::pow(std::max(glm::dot(nf, h), T(0)), c.shininess[f]) * spe;
+        const V3<T> s = std::pow(std::max(T(0), glm::dot(nf, h)), c.shininess[f]) * spe;
         if (S::separate_specular(key))
           sec += att * s;
         else
@@ -168,8 +180,8 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       }
       prim += att * sum;
     }
-    out.primary[f] = glm::clamp(V4<T>(prim, alpha), T(0), T(1));
-    out.secondary[f] = glm::clamp(V4<T>(sec, T(0)), T(0), T(1));
+    out.primary[f] = saturate(V4<T>(prim, alpha));
+    out.secondary[f] = saturate(V4<T>(sec, T(0)));
   }
   if (faces == 1) out.primary[1] = out.primary[0], out.secondary[1] = out.secondary[0];
   return out;

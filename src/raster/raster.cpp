@@ -94,9 +94,15 @@ WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
   return w;
 }
 
+// Whether 1/w is a normal float, so that the divide and the 1/w planes of setup stay finite.
+static bool w_mappable(double w) { return std::abs(w) >= 0x1p-126 && std::abs(w) <= 0x1p126; }
+
 unsigned outside_planes(const glm::dvec4& c) {
+  // Bit 7: no window position exists: a NaN or infinite coordinate (which compares false against
+  // every plane), or a w whose 1/w is not a normal float. Never "inside".
   return unsigned(c.x > c.w) | unsigned(c.x < -c.w) << 1 | unsigned(c.y > c.w) << 2 | unsigned(c.y < -c.w) << 3 |
-         unsigned(c.z > c.w) << 4 | unsigned(c.z < -c.w) << 5 | unsigned(!(c.w > 0)) << 6;
+         unsigned(c.z > c.w) << 4 | unsigned(c.z < -c.w) << 5 | unsigned(!(c.w > 0)) << 6 |
+         unsigned(!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && w_mappable(c.w))) << 7;
 }
 
 bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s) {
@@ -111,6 +117,11 @@ bool culled(bool back, const State& s) {
 
 std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const State& s, const Vertex* provoking,
                                       bool is_line, bool* back_facing) {
+  // A NaN or infinite clip coordinate (unspecified input, GL 2.1 section 2.1.1) has no place in the
+  // window: the primitive is dropped, so nothing non-finite reaches setup or feedback.
+  for (const Vertex& v : prim)
+    if (!(std::isfinite(v.clip.x) && std::isfinite(v.clip.y) && std::isfinite(v.clip.z) && std::isfinite(v.clip.w)))
+      return {};
   std::vector<ClipVertex> cv;
   cv.reserve(prim.size());
   for (const Vertex& v : prim) cv.push_back({v.clip, {v.front, v.back, v.front_sec, v.back_sec}});
@@ -128,6 +139,8 @@ std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const St
   std::vector<WindowVertex> out;
   out.reserve(clipped.size());
   const glm::ivec4 vp = s.viewport;
+  for (const ClipVertex& v : clipped)  // e.g. w ~ 1e-40: 1/w is no float, nor are the positions
+    if (!w_mappable(v.clip.w)) return {};
   for (const ClipVertex& v : clipped) {
     WindowVertex w = map_to_window(v.clip, s);
     const bool use_back = back && s.two_side;
@@ -320,7 +333,11 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
     make(c[0], c[1], c[2], p);
     t.c0[k] = float(p[0]), t.cx[k] = float(p[1]), t.cy[k] = float(p[2]);
   }
-  return true;
+  // Planes beyond float (1/w near float's limits over a tiny area): not drawn rather than drawn
+  // from infinities.
+  for (int k = 0; k < 4; ++k)
+    if (!(std::isfinite(t.c0[k]) && std::isfinite(t.cx[k]) && std::isfinite(t.cy[k]))) return false;
+  return std::isfinite(t.inv_w[0]) && std::isfinite(t.inv_w[1]) && std::isfinite(t.inv_w[2]);
 }
 
 void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,

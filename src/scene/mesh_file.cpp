@@ -94,15 +94,41 @@ void check_off(const std::string& data) {
                 t[size_t(k)] + "' (the file has " + std::to_string(nv) + " vertices)");
     }
   }
+  // OpenMesh's ASCII reader is not line-based: it takes the three counts, each vertex's x y z (and
+  // normal) and each face's size and indices as tokens (floats, unsigned ints: "-1" is 4294967295),
+  // then the rest of a vertex's line (and a face's line, with colours). The same walk here, so no
+  // count it reads can differ from what was checked (found by fuzz/: a 4-billion-entry face).
+  std::istringstream walk(data);
+  std::getline(walk, line);
+  unsigned counts[3];
+  if (!(walk >> counts[0] >> counts[1] >> counts[2])) corrupt("the counts are not three unsigned numbers");
+  const bool normals = prefix.find('N') != std::string::npos, colours = prefix.find('C') != std::string::npos;
+  for (unsigned i = 0; i < counts[0] && !walk.eof(); ++i) {
+    float x[6];
+    for (int k = 0; k < (normals ? 6 : 3); ++k)
+      if (!(walk >> x[k])) corrupt("vertex " + std::to_string(i) + " does not start with its floats (as OpenMesh reads them)");
+    std::getline(walk, line);
+  }
+  for (unsigned i = 0; i < counts[1]; ++i) {
+    unsigned n = 0, idx = 0;
+    if (!(walk >> n) || n < 3 || n > counts[0])
+      corrupt("face " + std::to_string(i) + " has no vertex count of 3.." + std::to_string(counts[0]) + " where OpenMesh reads it");
+    for (unsigned k = 0; k < n; ++k)
+      if (!(walk >> idx) || idx >= counts[0])
+        corrupt("face " + std::to_string(i) + " has a vertex index OpenMesh reads out of range");
+    if (colours) std::getline(walk, line);
+  }
 }
 
 // --- OBJ: OpenMesh's reader crashes when a malformed vertex line leaves it with fewer vertices than
 // the faces and their normals refer to, so every v / vn / vt line must hold its numbers and every
 // face must refer to elements already defined.
+// A number as OpenMesh reads one (a float from a stream, which OpenMesh skips the line on failing):
+// the whole token, no hex, nothing beyond float's range, no NUL inside (found by fuzz/).
 bool is_number(const std::string& t) {
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  return end != t.c_str() && *end == '\0' && std::isfinite(v);
+  std::istringstream in(t);
+  float v;
+  return in >> v && in.peek() == std::char_traits<char>::eof() && std::isfinite(v);
 }
 
 void check_obj(const std::string& data) {
@@ -118,7 +144,7 @@ void check_obj(const std::string& data) {
       const size_t need = kind == 1 ? 1 : 3;
       if (t.size() < need + 1) corrupt(where + "'" + t[0] + "' needs " + std::to_string(need) + " numbers");
       for (size_t k = 1; k < t.size() && k <= 3; ++k)  // (a fourth number, w or a colour, is left to OpenMesh)
-        if (!is_number(t[k])) corrupt(where + "'" + t[k] + "' is not a finite number");
+        if (!is_number(t[k])) corrupt(where + "'" + t[k] + "' is not a finite number (a float, as OpenMesh reads it)");
       ++counts[kind];
       continue;
     }
@@ -209,10 +235,9 @@ void check_ply(const std::string& data) {
     if (t[0] == "format") {
       if (t.size() != 3 || (t[1] != "ascii" && t[1] != "binary_little_endian" && t[1] != "binary_big_endian"))
         corrupt(where + "unknown format '" + line + "'");
-      // OpenMesh reads the version as a number and, when it cannot, loops without end.
-      char* end = nullptr;
-      std::strtod(t[2].c_str(), &end);
-      if (end == t[2].c_str() || *end != '\0') corrupt(where + "the format version '" + t[2] + "' is not a number");
+      // OpenMesh reads the version as a float and, when it cannot, loops without end (a version
+      // beyond float's range did that: found by fuzz/).
+      if (!is_number(t[2])) corrupt(where + "the format version '" + t[2] + "' is not a number");
       format = t[1];
     } else if (t[0] == "element") {
       PlyElement e;
@@ -284,26 +309,28 @@ void check_ply(const std::string& data) {
       }
 }
 
-// Sends OpenMesh's log and error streams to a string while it reads, and back afterwards.
+// Sends OpenMesh's log and error streams to a string while it reads, and back afterwards. They
+// write to std::cerr, std::clog and std::cout, whose buffers are pointed at the string meanwhile:
+// OpenMesh's own connect() / disconnect() would leak (disconnect does not delete the target
+// connect allocated; found by fuzz/ under LeakSanitizer).
 class CaptureOpenMeshOutput {
  public:
-  CaptureOpenMeshOutput() {
-    omerr().disconnect(std::cerr), omerr().connect(captured_);
-    omlog().disconnect(std::clog), omlog().connect(captured_);
-    omout().disconnect(std::cout), omout().connect(captured_);
-  }
+  CaptureOpenMeshOutput()
+      : err_(std::cerr.rdbuf(captured_.rdbuf())), log_(std::clog.rdbuf(captured_.rdbuf())),
+        out_(std::cout.rdbuf(captured_.rdbuf())) {}
   ~CaptureOpenMeshOutput() {
-    omerr().disconnect(captured_), omerr().connect(std::cerr);
-    omlog().disconnect(captured_), omlog().connect(std::clog);
-    omout().disconnect(captured_), omout().connect(std::cout);
+    flush();
+    std::cerr.rdbuf(err_), std::clog.rdbuf(log_), std::cout.rdbuf(out_);
   }
   std::string text() {
-    omerr().flush(), omlog().flush(), omout().flush();
+    flush();
     return captured_.str();
   }
 
  private:
-  std::ostringstream captured_;
+  static void flush() { omerr().flush(), omlog().flush(), omout().flush(); }
+  std::ostringstream captured_;  // first: the buffers below point at it
+  std::streambuf *err_, *log_, *out_;
 };
 
 std::string first_line(const std::string& s) {
