@@ -364,14 +364,6 @@ void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangl
   for (auto& th : pool) th.join();
 }
 
-void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const State& s) {
-  std::vector<Triangle> tris;
-  Triangle t;
-  for (size_t i = 1; i + 1 < poly.size(); ++i)
-    if (setup(poly[0], poly[i], poly[i + 1], s, t)) tris.push_back(t);
-  draw_triangles(fb, tris, s, 1);
-}
-
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s) {
   // llvmpipe draws a line as a parallelogram one pixel wide across its major axis, rasterized with
   // the triangle rules (left and bottom edges inclusive). Along the major axis a pixel belongs to

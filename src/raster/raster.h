@@ -96,7 +96,6 @@ inline void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, c
   draw_triangles(fb, std::vector<const std::vector<Triangle>*>{&tris}, s, threads);
 }
 
-void draw_polygon(Framebuffer& fb, const std::vector<WindowVertex>& poly, const State& s);
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);
 

@@ -815,7 +815,7 @@ void Context::Begin(GLenum mode) {
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = false;
-  flush_primitive(true);
+  flush_primitive();
 }
 
 // The array pointers check as Mesa's varray.c does: the stride first, then the type, then the size.
@@ -894,7 +894,7 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   verts_.clear();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
   for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
-  flush_primitive(false);
+  flush_primitive();
 }
 
 void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
@@ -919,13 +919,13 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i));
     for (uint32_t& e : elements_) e -= lo;
   }
-  flush_primitive(false);
+  flush_primitive();
   elements_.clear();
 }
 
 // ---------------------------------------------------------------- primitives
 
-void Context::flush_primitive(bool) {
+void Context::flush_primitive() {
   if (render_mode_ == GL_SELECT) {  // selection is not modelled: nothing is drawn
     verts_.clear();
     return;

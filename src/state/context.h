@@ -132,7 +132,7 @@ class Context {
   void fetch_vertex(GLint i);  // from the enabled client arrays, as glArrayElement
   void process_vertex(const glm::dvec4& obj);
   void prepare_lighting();
-  void flush_primitive(bool end_of_begin);
+  void flush_primitive();
 
   raster::Framebuffer fb_;
   Precision precision_;
