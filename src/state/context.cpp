@@ -15,6 +15,8 @@ namespace ffc::state {
 
 namespace {
 thread_local Context* g_current = nullptr;
+constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
+constexpr GLint kParallelVertices = 8192;  // below this, starting a thread costs more than it saves
 
 int light_index(GLenum light) { return light >= GL_LIGHT0 && light < GL_LIGHT0 + 8 ? int(light - GL_LIGHT0) : -1; }
 
@@ -736,8 +738,30 @@ void Context::Color(double r, double g, double b, double a) {
   }
 }
 
-void Context::process_vertex(const glm::dvec4& obj) {
+void Context::update_vertex_constants() {
+  if (!lighting_) return;
+  if (constants_dirty_) prepare_lighting();
+  // Normals transform by the inverse transpose of the modelview's upper 3x3.
   const glm::dmat4& mv = modelview_.back();
+  if (mv != normal_matrix_of_) {  // the inverse is per modelview, not per vertex
+    normal_matrix_of_ = mv;
+    // A singular modelview has no inverse: the transformed normal is undefined and the inverse's
+    // entries arbitrary (2.11.3). Mesa (m_matrix.c) takes the identity; ours too, not infinities
+    // or rounding noise. Singular: |det| within 1e-14 of its largest value for the rows' (or the
+    // columns') lengths (Hadamard), a test that does not depend on scale (1e-30 I inverts).
+    const glm::dmat3 m3(mv);
+    double rows = 1, cols = 1;
+    for (int i = 0; i < 3; ++i)
+      cols *= glm::length(m3[i]), rows *= glm::length(glm::dvec3(m3[0][i], m3[1][i], m3[2][i]));
+    const bool singular = !(std::abs(glm::determinant(m3)) > 1e-14 * std::min(rows, cols));
+    normal_matrix_ = singular ? glm::dmat3(1) : glm::inverse(m3);
+    for (int k = 0; k < 9; ++k)
+      if (!std::isfinite(normal_matrix_[k / 3][k % 3])) normal_matrix_ = glm::dmat3(1);
+  }
+}
+
+raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
+                               bool* zero_normal) const {
   raster::Vertex v;
   glm::dvec4 eye;
   if (precision_ == Precision::Float) {  // positions rounded as Mesa rounds them
@@ -745,57 +769,83 @@ void Context::process_vertex(const glm::dvec4& obj) {
     v.clip = fmat::transform(mvp_f_, of);
     eye = fmat::transform(modelview_f_.back(), of);
   } else {
-    eye = mv * obj;
+    eye = modelview_.back() * obj;
     v.clip = projection_.back() * eye;
   }
   if (!lighting_) {
     // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
-    for (int k = 0; k < 4; ++k) v.front[k] = !(color_[k] < 1) ? 1.0 : color_[k] > 0 ? color_[k] : 0.0;
+    for (int k = 0; k < 4; ++k) v.front[k] = !(color[k] < 1) ? 1.0 : color[k] > 0 ? color[k] : 0.0;
     v.back = v.front;
     v.front_sec = v.back_sec = glm::dvec4(0);
-  } else {
-    if (constants_dirty_) prepare_lighting();
-    // Normals transform by the inverse transpose of the modelview's upper 3x3.
-    if (mv != normal_matrix_of_) {  // the inverse is per modelview, not per vertex
-      normal_matrix_of_ = mv;
-      // A singular modelview has no inverse: the transformed normal is undefined and the inverse's
-      // entries arbitrary (2.11.3). Mesa (m_matrix.c) takes the identity; ours too, not infinities
-      // or rounding noise. Singular: |det| within 1e-14 of its largest value for the rows' (or the
-      // columns') lengths (Hadamard), a test that does not depend on scale (1e-30 I inverts).
-      const glm::dmat3 m3(mv);
-      double rows = 1, cols = 1;
-      for (int i = 0; i < 3; ++i)
-        cols *= glm::length(m3[i]), rows *= glm::length(glm::dvec3(m3[0][i], m3[1][i], m3[2][i]));
-      const bool singular = !(std::abs(glm::determinant(m3)) > 1e-14 * std::min(rows, cols));
-      normal_matrix_ = singular ? glm::dmat3(1) : glm::inverse(m3);
-      for (int k = 0; k < 9; ++k)
-        if (!std::isfinite(normal_matrix_[k / 3][k % 3])) normal_matrix_ = glm::dmat3(1);
-    }
-    const glm::dmat3& inv = normal_matrix_;
-    glm::dvec3 n = normal_ * inv;  // row vector times M^-1
-    if (normalize_) {
-      const double len = glm::length(n);
-      if (len > 0) n /= len;  // a zero normal stays zero: ambient and emission only
-      else deviations_.insert("zero-length normal under GL_NORMALIZE: only ambient and emission remain");
-    } else if (rescale_normal_) {
-      const double f = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
-      if (f > 0) n /= f;
-    }
-    if (precision_ == Precision::Float) {
-      const glm::vec4 pf(eye), cf(color_);
-      const glm::vec3 nf(n);
-      lighting::Lit<float> lit;
-      kernel_f_(prepared_f_, &pf, &nf, &cf, 1, &lit);
-      v.front = lit.primary[0], v.back = lit.primary[1];
-      v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
-    } else {
-      lighting::Lit<double> lit;
-      kernel_d_(prepared_d_, &eye, &n, &color_, 1, &lit);
-      v.front = lit.primary[0], v.back = lit.primary[1];
-      v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
-    }
+    return v;
   }
-  verts_.push_back(v);
+  const glm::dmat3& inv = normal_matrix_;
+  glm::dvec3 n = normal * inv;  // row vector times M^-1
+  if (normalize_) {
+    const double len = glm::length(n);
+    if (len > 0) n /= len;  // a zero normal stays zero: ambient and emission only
+    else *zero_normal = true;
+  } else if (rescale_normal_) {
+    const double f = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
+    if (f > 0) n /= f;
+  }
+  if (precision_ == Precision::Float) {
+    const glm::vec4 pf(eye), cf(color);
+    const glm::vec3 nf(n);
+    lighting::Lit<float> lit;
+    kernel_f_(prepared_f_, &pf, &nf, &cf, 1, &lit);
+    v.front = lit.primary[0], v.back = lit.primary[1];
+    v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
+  } else {
+    lighting::Lit<double> lit;
+    kernel_d_(prepared_d_, &eye, &n, &color, 1, &lit);
+    v.front = lit.primary[0], v.back = lit.primary[1];
+    v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
+  }
+  return v;
+}
+
+void Context::process_vertex(const glm::dvec4& obj) {
+  update_vertex_constants();
+  bool zero_normal = false;
+  verts_.push_back(vertex(obj, normal_, color_, &zero_normal));
+  if (zero_normal) deviations_.insert(kZeroNormal);
+}
+
+// A large glDrawArrays / glDrawElements range: the vertices are independent, so both cores take
+// half each (the current normal and colour end as the last element sets them, as one by one).
+void Context::fetch_range(GLint first, GLint count) {
+  update_vertex_constants();
+  verts_.resize(size_t(count));
+  auto attribute = [](const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
+    const uint8_t* p = element(a, i);
+    for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
+    return v;
+  };
+  auto work = [&](GLint lo, GLint hi, bool* zero) {
+    for (GLint i = lo; i < hi; ++i) {
+      const glm::dvec3 n = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, true, glm::dvec4(0)))
+                                                 : normal_;
+      const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
+                                                : color_;
+      verts_[size_t(i - first)] = vertex(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)), n, c, zero);
+    }
+  };
+  bool zero[2] = {false, false};
+  const GLint mid = first + count / 2;
+  std::thread other(work, mid, first + count, &zero[1]);
+  work(first, mid, &zero[0]);
+  other.join();
+  if (zero[0] || zero[1]) deviations_.insert(kZeroNormal);
+  const GLint last = first + count - 1;
+  if (normal_array_.enabled) {
+    const glm::dvec4 n = attribute(normal_array_, last, 3, true, glm::dvec4(0));
+    Normal(n.x, n.y, n.z);
+  }
+  if (color_array_.enabled) {
+    const glm::dvec4 c = attribute(color_array_, last, color_array_.size, true, glm::dvec4(1));
+    Color(c.r, c.g, c.b, c.a);
+  }
 }
 
 void Context::Vertex(double x, double y, double z, double w) {
@@ -893,7 +943,10 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   prim_mode_ = mode;
   verts_.clear();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
-  for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
+  if (count >= kParallelVertices && threads_ > 1)
+    fetch_range(first, count);
+  else
+    for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
   flush_primitive();
 }
 
@@ -916,7 +969,10 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     lo = std::min(lo, elements_[i]), hi = std::max(hi, elements_[i]);
   }
   if (count > 0) {
-    for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i));
+    if (hi - lo + 1 >= kParallelVertices && threads_ > 1)
+      fetch_range(GLint(lo), GLint(hi - lo + 1));
+    else
+      for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i));
     for (uint32_t& e : elements_) e -= lo;
   }
   flush_primitive();

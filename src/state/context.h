@@ -131,6 +131,10 @@ class Context {
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
   void fetch_vertex(GLint i);  // from the enabled client arrays, as glArrayElement
   void process_vertex(const glm::dvec4& obj);
+  void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
+  raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
+                        bool* zero_normal) const;
+  void fetch_range(GLint first, GLint count);
   void prepare_lighting();
   void flush_primitive();
 
