@@ -138,7 +138,6 @@ std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const St
   const std::vector<ClipVertex> clipped = clip(std::move(cv), is_line);
   std::vector<WindowVertex> out;
   out.reserve(clipped.size());
-  const glm::ivec4 vp = s.viewport;
   for (const ClipVertex& v : clipped)  // e.g. w ~ 1e-40: 1/w is no float, nor are the positions
     if (!w_mappable(v.clip.w)) return {};
   for (const ClipVertex& v : clipped) {
