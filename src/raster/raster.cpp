@@ -11,7 +11,7 @@ namespace ffc::raster {
 
 // Fragments written from a non-finite colour (NaN or an infinity before the clamp): what
 // `ffcompat stress` reads to tell that no pixel was written from one (declared in
-// stress/raster_probe.h). The check costs three SSE instructions per fragment, no branch.
+// raster.h). The check costs three SSE instructions per fragment, no branch.
 static std::atomic<uint64_t> g_nonfinite_fragments{0};
 uint64_t nonfinite_fragments() { return g_nonfinite_fragments.load(std::memory_order_relaxed); }
 void reset_nonfinite_fragments() { g_nonfinite_fragments.store(0, std::memory_order_relaxed); }

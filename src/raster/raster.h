@@ -99,6 +99,11 @@ inline void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, c
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);
 
+// Fragments written from a non-finite colour (a NaN or an infinity in any channel before the
+// clamp), counted process-wide for the stress suite: reset, draw, read.
+uint64_t nonfinite_fragments();
+void reset_nonfinite_fragments();
+
 // GL's float-to-unorm8 conversion, rounding half to even as llvmpipe does.
 uint8_t to_unorm8(double c);
 

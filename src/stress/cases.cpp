@@ -645,17 +645,7 @@ std::vector<Case> build() {
     c.draw = [] {
       scenes::standard();
       glTranslatef(0, 0, -4);
-      const Geometry& g = scenes::sphere(3);
-      std::vector<float> p, n;
-      for (size_t i = 0; i < g.positions.size(); ++i) {
-        for (int k = 0; k < 3; ++k) p.push_back(float(g.positions[i][k] * 1e-30)), n.push_back(float(g.normals[i][k]));
-        p.push_back(1e-30f);
-      }
-      glEnableClientState(GL_VERTEX_ARRAY);
-      glEnableClientState(GL_NORMAL_ARRAY);
-      glVertexPointer(4, GL_FLOAT, 0, p.data());
-      glNormalPointer(GL_FLOAT, 0, n.data());
-      glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
+      scenes::draw_homogeneous(scenes::sphere(3), 1e-30, 1e-30f);
     };
     c.note = "Vertices (x, y, z, 1) * 1e-30 with w = 1e-30: the same projective points as the sphere, and "
              "clipping and the perspective divide make the same picture. For lighting, 2.14.1 takes VP "
@@ -674,17 +664,7 @@ std::vector<Case> build() {
     c.draw = [] {
       scenes::standard();
       glTranslatef(0, 0, -4);
-      const Geometry& g = scenes::sphere(2);
-      std::vector<float> p, n;
-      for (size_t i = 0; i < g.positions.size(); ++i) {
-        for (int k = 0; k < 3; ++k) p.push_back(float(g.positions[i][k] * 1e-40)), n.push_back(float(g.normals[i][k]));
-        p.push_back(1e-40f);
-      }
-      glEnableClientState(GL_VERTEX_ARRAY);
-      glEnableClientState(GL_NORMAL_ARRAY);
-      glVertexPointer(4, GL_FLOAT, 0, p.data());
-      glNormalPointer(GL_FLOAT, 0, n.data());
-      glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
+      scenes::draw_homogeneous(scenes::sphere(2), 1e-40, 1e-40f);
     };
     c.note = "Vertices (x, y, z, 1) * 1e-40: every coordinate a float denormal, the sphere's projective "
              "points again. Clip w is ~4e-40, so 1/w overflows float: the perspective divide and the "
@@ -731,17 +711,7 @@ std::vector<Case> build() {
     c.draw = [] {
       scenes::standard();
       glTranslatef(0, 0, -4);
-      const Geometry& g = scenes::sphere(2);
-      std::vector<float> p, n;
-      for (size_t i = 0; i < g.positions.size(); ++i) {
-        for (int k = 0; k < 3; ++k) p.push_back(-float(g.positions[i][k])), n.push_back(float(g.normals[i][k]));
-        p.push_back(-1);
-      }
-      glEnableClientState(GL_VERTEX_ARRAY);
-      glEnableClientState(GL_NORMAL_ARRAY);
-      glVertexPointer(4, GL_FLOAT, 0, p.data());
-      glNormalPointer(GL_FLOAT, 0, n.data());
-      glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
+      scenes::draw_homogeneous(scenes::sphere(2), -1, -1);
     };
     c.note = "Every vertex (-x, -y, -z, -1): after the modelview and projection all clip w are negative, "
              "and -w_c <= x_c <= w_c has no solution: the view volume (2.12) holds none of it and nothing "

@@ -15,7 +15,7 @@
 
 #include "backends/backend.h"
 #include "gl/dispatch.h"
-#include "stress/raster_probe.h"
+#include "raster/raster.h"
 #include "stress/stress.h"
 
 namespace ffc::stress {

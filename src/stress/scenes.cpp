@@ -146,6 +146,21 @@ void draw(const Geometry& g, const std::array<double, 3>& scale, double normal_s
   glDisableClientState(GL_NORMAL_ARRAY);
 }
 
+void draw_homogeneous(const Geometry& g, double scale, float w) {
+  std::vector<float> p, n;
+  for (size_t i = 0; i < g.positions.size(); ++i) {
+    for (int k = 0; k < 3; ++k) p.push_back(float(g.positions[i][k] * scale)), n.push_back(float(g.normals[i][k]));
+    p.push_back(w);
+  }
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(4, GL_FLOAT, 0, p.data());
+  glNormalPointer(GL_FLOAT, 0, n.data());
+  glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+}
+
 void draw_double(const Geometry& g, double scale) {
   std::vector<double> p, n;
   for (const auto& v : g.positions)

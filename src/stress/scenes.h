@@ -35,6 +35,9 @@ inline void draw(const Geometry& g, double scale = 1, double normal_scale = 1) {
 }
 // The same with double client arrays (GL_DOUBLE), so our double reference sees every bit.
 void draw_double(const Geometry& g, double scale = 1);
+// Client arrays of 4-component positions (x s, y s, z s, w): the same projective points as
+// (x, y, z, 1) when s = w, with the geometry's normals.
+void draw_homogeneous(const Geometry& g, double scale, float w);
 
 // Mesh cases.
 Geometry slivers();          // a fan of triangles whose apex angle goes down to 1e-7 radians

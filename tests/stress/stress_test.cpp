@@ -13,7 +13,6 @@
 #include "mesh/icosphere.h"
 #include "mesh/mesh.h"
 #include "raster/raster.h"
-#include "stress/raster_probe.h"
 #include "stress/stress.h"
 
 namespace ffc {
