@@ -1,4 +1,5 @@
 #include "raster/raster.h"
+#include "raster/span.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,7 +13,10 @@ namespace ffc::raster {
 // Fragments written from a non-finite colour (NaN or an infinity before the clamp): what
 // `ffcompat stress` reads to tell that no pixel was written from one (declared in
 // raster.h). The check costs three SSE instructions per fragment, no branch.
-static std::atomic<uint64_t> g_nonfinite_fragments{0};
+namespace detail {
+std::atomic<uint64_t> g_nonfinite_fragments{0};
+}
+using detail::g_nonfinite_fragments;
 uint64_t nonfinite_fragments() { return g_nonfinite_fragments.load(std::memory_order_relaxed); }
 void reset_nonfinite_fragments() { g_nonfinite_fragments.store(0, std::memory_order_relaxed); }
 
@@ -152,25 +156,12 @@ std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const St
 
 namespace {
 
-bool depth_pass(GLenum func, uint32_t z, uint32_t stored) {
-  switch (func) {
-    case GL_NEVER: return false;
-    case GL_LESS: return z < stored;
-    case GL_EQUAL: return z == stored;
-    case GL_LEQUAL: return z <= stored;
-    case GL_GREATER: return z > stored;
-    case GL_NOTEQUAL: return z != stored;
-    case GL_GEQUAL: return z >= stored;
-    default: return true;
-  }
-}
-
 void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c, const State& s) {
   if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return;
   const size_t i = size_t(y) * fb.width + x;
   const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
   if (s.depth_test) {
-    if (!depth_pass(s.depth_func, zi, fb.depth[i])) return;
+    if (!detail::depth_pass(s.depth_func, zi, fb.depth[i])) return;
     fb.depth[i] = zi;
   }
   uint8_t* p = &fb.color[i * 4];
@@ -180,102 +171,6 @@ void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c
 
 // Snapped to 1/256 pixel, as llvmpipe's 8 subpixel bits; nearbyint rounds half to even.
 int64_t snap(double v) { return int64_t(std::nearbyint(v * 256.0)); }
-
-// The plane through three (x, y, value) points: value = p0 + p1 x + p2 y.
-// Solves value = p0 + p1 x + p2 y through three points once per triangle; each attribute is then
-// a few multiplications.
-struct PlaneSolver {
-  double x0, y0, x1, y1, x2, y2, inv_det;
-  explicit PlaneSolver(const glm::dvec3 (&pos)[3])
-      : x0(pos[0].x), y0(pos[0].y), x1(pos[1].x - pos[0].x), y1(pos[1].y - pos[0].y),
-        x2(pos[2].x - pos[0].x), y2(pos[2].y - pos[0].y) {
-    const double det = x1 * y2 - x2 * y1;
-    inv_det = det != 0 ? 1 / det : 0;  // degenerate unsnapped: a constant through vertex 0
-  }
-  void operator()(double a, double b, double c, double* p) const {
-    const double d1 = b - a, d2 = c - a;
-    p[1] = (d1 * y2 - d2 * y1) * inv_det;
-    p[2] = (x1 * d2 - x2 * d1) * inv_det;
-    p[0] = a - p[1] * x0 - p[2] * y0;
-  }
-};
-
-// First and last k with e0 + a k >= thr, for k in [lo, hi]; empty when first > last.
-inline void span(int64_t e0, int64_t a, int64_t thr, int& lo, int& hi) {
-  const int64_t need = thr - e0;  // a k >= need
-  if (a > 0) {
-    const int64_t k = need >= 0 ? (need + a - 1) / a : -((-need) / a);
-    lo = int(std::max<int64_t>(lo, k));
-  } else if (a < 0) {
-    const int64_t b = -a, m = -need;  // k <= m / b
-    const int64_t k = m >= 0 ? m / b : -((-m + b - 1) / b);
-    hi = int(std::min<int64_t>(hi, k));
-  } else if (need > 0) {
-    hi = lo - 1;
-  }
-}
-
-void rasterize(Framebuffer& fb, const Triangle& t, const State& s, int band_rows, int band, int bands) {
-  // Edge functions at pixel centres in 1/256 units. A pixel is inside when every e_i >= thr_i
-  // (0 for inclusive edges, 1 otherwise); each row's span is solved for, not searched.
-  int64_t a[3], b[3], c[3], thr[3];
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    a[i] = -(t.y[k] - t.y[j]) * 256;  // per pixel in x
-    b[i] = (t.x[k] - t.x[j]) * 256;   // per pixel in y
-    c[i] = (t.x[k] - t.x[j]) * (128 - t.y[j]) - (t.y[k] - t.y[j]) * (128 - t.x[j]);
-    thr[i] = t.inclusive[i] ? 0 : 1;
-  }
-  const int y0 = t.ymin - t.ymin % band_rows;
-  uint64_t nonfinite = 0;
-  for (int by = y0; by <= t.ymax; by += band_rows) {
-    if ((by / band_rows) % bands != band) continue;
-    for (int py = std::max(by, t.ymin); py <= std::min(by + band_rows - 1, t.ymax); ++py) {
-      int lo = t.xmin, hi = t.xmax;
-      if (hi - lo < 24) {  // narrow: step the edges to the span's ends (divisions cost more)
-        int64_t e[3] = {c[0] + b[0] * py + a[0] * lo, c[1] + b[1] * py + a[1] * lo, c[2] + b[2] * py + a[2] * lo};
-        while (lo <= hi && !(e[0] >= thr[0] && e[1] >= thr[1] && e[2] >= thr[2]))
-          ++lo, e[0] += a[0], e[1] += a[1], e[2] += a[2];
-        int64_t f[3] = {e[0] + a[0] * (hi - lo), e[1] + a[1] * (hi - lo), e[2] + a[2] * (hi - lo)};
-        while (hi >= lo && !(f[0] >= thr[0] && f[1] >= thr[1] && f[2] >= thr[2]))
-          --hi, f[0] -= a[0], f[1] -= a[1], f[2] -= a[2];
-      } else {
-        for (int i = 0; i < 3; ++i) span(c[i] + b[i] * py, a[i], thr[i], lo, hi);
-      }
-      if (lo > hi) continue;
-      const double cy = py + 0.5, x0 = lo + 0.5;
-      // Planes stepped along the row; the four channels in one SSE register.
-      double z = t.z[0] + t.z[1] * x0 + t.z[2] * cy;
-      float iw = t.inv_w[0] + t.inv_w[1] * float(x0) + t.inv_w[2] * float(cy);
-      __m128 col = _mm_add_ps(_mm_load_ps(t.c0), _mm_add_ps(_mm_mul_ps(_mm_load_ps(t.cx), _mm_set1_ps(float(x0))),
-                                                            _mm_mul_ps(_mm_load_ps(t.cy), _mm_set1_ps(float(cy)))));
-      const __m128 dcol = _mm_load_ps(t.cx), zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
-      uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
-      uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
-      for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
-        bool pass = true;
-        if (s.depth_test) {
-          const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
-          pass = depth_pass(s.depth_func, zi, *zp);
-          if (pass) *zp = zi;
-        }
-        if (pass) {
-          // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
-          __m128 c = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
-          nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(c, zero), zero)) != 0;  // c * 0: NaN unless finite
-          c = _mm_min_ps(_mm_max_ps(c, zero), one);
-          const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(c, k255));
-          const __m128i i16 = _mm_packs_epi32(i32, i32);
-          const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
-          std::memcpy(o, &rgba, 4);
-        }
-        z += t.z[1], iw += t.inv_w[1];
-        col = _mm_add_ps(col, dcol);
-      }
-    }
-  }
-  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
-}
 
 }  // namespace
 
@@ -290,53 +185,15 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
     t.x[i] = w.snapped ? w.sx : snap(w.pos.x);
     t.y[i] = w.snapped ? w.sy : snap(w.pos.y);
   }
-  t.area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
-  if (t.area == 0) return false;
-  if (t.area < 0) {  // make it counter-clockwise
-    std::swap(t.x[1], t.x[2]), std::swap(t.y[1], t.y[2]), std::swap(v[1], v[2]);
-    t.area = -t.area;
-  }
-  for (int i = 0; i < 3; ++i) {
-    // A pixel exactly on an edge belongs to the triangle for left and bottom edges (GL window
-    // coordinates), so a pixel on an edge shared by two triangles is drawn once.
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const int64_t dx = t.x[k] - t.x[j], dy = t.y[k] - t.y[j];
-    t.inclusive[i] = dy < 0 || (dy == 0 && dx > 0);
-  }
-  // Pixel centres (X + 0.5) inside the snapped bounding box.
-  auto lo = [](int64_t v) { return int((v - 128 + 255) >> 8); };  // first centre >= v
-  auto hi = [](int64_t v) { return int((v - 128) >> 8); };        // last centre <= v
-  t.xmin = std::max(0, lo(std::min({t.x[0], t.x[1], t.x[2]})));
-  t.xmax = hi(std::max({t.x[0], t.x[1], t.x[2]}));
-  t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
-  t.ymax = hi(std::max({t.y[0], t.y[1], t.y[2]}));
-  if (t.xmin > t.xmax || t.ymin > t.ymax) return false;  // between pixel centres: nothing to draw
+  // The box is kept within 16384 pixels of the framebuffer; draw_triangles clips it.
+  bool swapped = false;
+  if (!detail::setup_edges(t, 1 << 30, 1 << 30, &swapped)) return false;
+  if (swapped) std::swap(v[1], v[2]);
   const glm::dvec3 pos[3] = {v[0]->w->pos, v[1]->w->pos, v[2]->w->pos};
-  // Planes from the unsnapped positions.
-  const PlaneSolver make(pos);
-  make(pos[0].z, pos[1].z, pos[2].z, t.z);
-  if (s.flat) {  // a constant, as llvmpipe's constant interpolation: no rounding through 1/w
-    t.inv_w[0] = 1, t.inv_w[1] = t.inv_w[2] = 0;
-    for (int k = 0; k < 4; ++k) {
-      t.c0[k] = float((*v[0]->color)[k] + (s.add_secondary && k < 3 ? (*v[0]->sec)[k] : 0));
-      t.cx[k] = t.cy[k] = 0;
-    }
-    return true;
-  }
-  double p[3];
-  make(v[0]->w->inv_w, v[1]->w->inv_w, v[2]->w->inv_w, p);
-  for (int i = 0; i < 3; ++i) t.inv_w[i] = float(p[i]);
-  for (int k = 0; k < 4; ++k) {
-    double c[3];
-    for (int i = 0; i < 3; ++i) c[i] = ((*v[i]->color)[k] + (s.add_secondary && k < 3 ? (*v[i]->sec)[k] : 0)) * v[i]->w->inv_w;
-    make(c[0], c[1], c[2], p);
-    t.c0[k] = float(p[0]), t.cx[k] = float(p[1]), t.cy[k] = float(p[2]);
-  }
-  // Planes beyond float (1/w near float's limits over a tiny area): not drawn rather than drawn
-  // from infinities.
-  for (int k = 0; k < 4; ++k)
-    if (!(std::isfinite(t.c0[k]) && std::isfinite(t.cx[k]) && std::isfinite(t.cy[k]))) return false;
-  return std::isfinite(t.inv_w[0]) && std::isfinite(t.inv_w[1]) && std::isfinite(t.inv_w[2]);
+  const double inv_w[3] = {v[0]->w->inv_w, v[1]->w->inv_w, v[2]->w->inv_w};
+  const glm::dvec4* const color[3] = {v[0]->color, v[1]->color, v[2]->color};
+  const glm::dvec4* const sec[3] = {v[0]->sec, v[1]->sec, v[2]->sec};
+  return detail::setup_planes(t, pos, inv_w, color, sec, s.flat, s.add_secondary);
 }
 
 void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
@@ -352,7 +209,7 @@ void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangl
         Triangle c = t;  // clip the box to the framebuffer
         c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
         c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
-        if (c.xmin <= c.xmax && c.ymin <= c.ymax) rasterize(fb, c, s, kBandRows, band, bands);
+        if (c.xmin <= c.xmax && c.ymin <= c.ymax) detail::rasterize(fb, c, s, kBandRows, band, bands, [] { return true; });
       }
   };
   threads = std::max(1, std::min(threads, (fb.height + kBandRows - 1) / kBandRows));

@@ -1,6 +1,7 @@
 #include "state/context.h"
 
 #include "state/float_matrix.h"
+#include "state/client_arrays.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,6 @@ namespace ffc::state {
 
 namespace {
 thread_local Context* g_current = nullptr;
-constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
 constexpr GLint kParallelVertices = 8192;  // below this, starting a thread costs more than it saves
 
 int light_index(GLenum light) { return light >= GL_LIGHT0 && light < GL_LIGHT0 + 8 ? int(light - GL_LIGHT0) : -1; }
@@ -29,37 +29,6 @@ int light_param_count(GLenum p) {
     case GL_QUADRATIC_ATTENUATION: return 1;
     default: return 0;
   }
-}
-
-size_t type_size(GLenum t) {
-  switch (t) {
-    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
-    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
-    case GL_DOUBLE: return 8;
-    default: return 0;
-  }
-}
-
-// Reads component k of an array element; `normalized` maps integers to [-1,1] or [0,1] as GL 2.1
-// does for normals and colours: signed (2c+1)/(2^b-1), unsigned c/(2^b-1).
-double read_component(const uint8_t* p, GLenum type, int k, bool normalized) {
-  switch (type) {
-    case GL_BYTE: { int8_t v; std::memcpy(&v, p + k, 1); return normalized ? (2.0 * v + 1) / 255.0 : v; }
-    case GL_UNSIGNED_BYTE: { uint8_t v = p[k]; return normalized ? v / 255.0 : v; }
-    case GL_SHORT: { int16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? (2.0 * v + 1) / 65535.0 : v; }
-    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? v / 65535.0 : v; }
-    case GL_INT: { int32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? (2.0 * v + 1) / 4294967295.0 : v; }
-    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? v / 4294967295.0 : v; }
-    case GL_FLOAT: { float v; std::memcpy(&v, p + 4 * k, 4); return v; }
-    case GL_DOUBLE: { double v; std::memcpy(&v, p + 8 * k, 8); return v; }
-    default: return 0;
-  }
-}
-
-const uint8_t* element(const ClientArray& a, GLint i) {
-  const size_t stride = a.stride ? size_t(a.stride) : a.size * type_size(a.type);
-  return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
 }
 
 // Primitive modes: GL_POINTS (0) .. GL_POLYGON (9), and GL 3.2's adjacency modes (0xA..0xD:
@@ -943,6 +912,10 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   prim_mode_ = mode;
   verts_.clear();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
+  if (shaded_path(mode)) {
+    shade_range(first, count);
+    return draw_shaded(nullptr, size_t(count) / 3);
+  }
   if (count >= kParallelVertices && threads_ > 1)
     fetch_range(first, count);
   else
@@ -968,6 +941,13 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     elements_[i] = uint32_t(read_component(p, type, i, false));
     lo = std::min(lo, elements_[i]), hi = std::max(hi, elements_[i]);
   }
+  if (count > 0 && shaded_path(mode)) {
+    shade_range(GLint(lo), GLint(hi - lo + 1));
+    for (uint32_t& e : elements_) e -= lo;
+    draw_shaded(elements_.data(), size_t(count) / 3);
+    elements_.clear();
+    return;
+  }
   if (count > 0) {
     if (hi - lo + 1 >= kParallelVertices && threads_ > 1)
       fetch_range(GLint(lo), GLint(hi - lo + 1));
@@ -986,19 +966,7 @@ void Context::flush_primitive() {
     verts_.clear();
     return;
   }
-  raster::State rs;
-  rs.viewport = viewport_;
-  rs.depth_range = depth_range_;
-  rs.flat = shade_model_ == GL_FLAT;
-  rs.depth_test = depth_test_;
-  rs.depth_func = depth_func_;
-  rs.cull = cull_face_;
-  rs.cull_mode = cull_mode_;
-  rs.front_face = front_face_;
-  rs.two_side = lighting_ && model_.two_side;
-  rs.add_secondary = lighting_ && model_.separate_specular;
-  rs.float_window = precision_ == Precision::Float;
-  rs.fb_height = fb_.height;
+  const raster::State rs = raster_state();
   const bool feedback = render_mode_ == GL_FEEDBACK;
   std::vector<raster::Triangle>& tris = triangles_;
   tris.clear();

@@ -11,16 +11,20 @@
 #include <array>
 #include <glm/glm.hpp>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "lighting/lighting.h"
 #include "raster/raster.h"
+#include "raster/triangle_list.h"
 
 namespace ffc::state {
 
 enum class Precision { Float, Double };
+
+inline constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
 
 struct ClientArray {
   bool enabled = false;
@@ -36,7 +40,10 @@ class Context {
 
   raster::Framebuffer& framebuffer() { return fb_; }
   Precision precision() const { return precision_; }
-  void set_threads(int n) { threads_ = n < 1 ? 1 : n; }  // the rasterizer's; the picture does not change
+  void set_threads(int n) {
+    threads_ = n < 1 ? 1 : n;
+    workers_.reset();
+  }  // the rasterizer's; the picture does not change
   static Context* current();
   static void make_current(Context* c);
 
@@ -135,6 +142,13 @@ class Context {
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
                         bool* zero_normal) const;
   void fetch_range(GLint first, GLint count);
+  // The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES, rendering, float):
+  // array elements [first, first + count) lit into shaded_, then drawn from shared vertices.
+  bool shaded_path(GLenum mode) const;
+  void shade_range(GLint first, GLint count);
+  void draw_shaded(const uint32_t* indices, size_t triangles);
+  raster::State raster_state() const;
+  raster::Workers& workers();
   void prepare_lighting();
   void flush_primitive();
 
@@ -196,6 +210,9 @@ class Context {
   std::vector<unsigned> outside_;             // per vertex: the view-volume planes it is outside
   std::vector<raster::WindowVertex> window_;  // per vertex inside: its window position
   int threads_ = 2;
+  std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
+  std::vector<raster::ShadedVertex> shaded_;  // the triangle-list path's vertices
+  raster::ShadedColors shaded_colors_;
 
   // Feedback
   GLenum render_mode_ = GL_RENDER;

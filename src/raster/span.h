@@ -1,0 +1,215 @@
+// The rasterizer's shared inner parts (not an interface): edge setup, attribute planes and the row
+// loop, used by draw_triangles (set-up triangles) and draw_triangle_list (shared vertices).
+#pragma once
+#include <emmintrin.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstring>
+
+#include "raster/raster.h"
+
+namespace ffc::raster::detail {
+
+extern std::atomic<uint64_t> g_nonfinite_fragments;
+
+// The depth functions the row loop is compiled for; the others go through depth_pass.
+enum DepthMode { kNoDepth, kLess, kLequal, kAnyDepth };
+inline DepthMode depth_mode(const State& s) {
+  if (!s.depth_test) return kNoDepth;
+  return s.depth_func == GL_LESS ? kLess : s.depth_func == GL_LEQUAL ? kLequal : kAnyDepth;
+}
+
+inline bool depth_pass(GLenum func, uint32_t z, uint32_t stored) {
+  switch (func) {
+    case GL_NEVER: return false;
+    case GL_LESS: return z < stored;
+    case GL_EQUAL: return z == stored;
+    case GL_LEQUAL: return z <= stored;
+    case GL_GREATER: return z > stored;
+    case GL_NOTEQUAL: return z != stored;
+    case GL_GEQUAL: return z >= stored;
+    default: return true;
+  }
+}
+
+// Solves value = p0 + p1 x + p2 y through three points once per triangle; each attribute is then
+// a few multiplications.
+struct PlaneSolver {
+  double x0, y0, x1, y1, x2, y2, inv_det;
+  explicit PlaneSolver(const glm::dvec3 (&pos)[3])
+      : x0(pos[0].x), y0(pos[0].y), x1(pos[1].x - pos[0].x), y1(pos[1].y - pos[0].y),
+        x2(pos[2].x - pos[0].x), y2(pos[2].y - pos[0].y) {
+    const double det = x1 * y2 - x2 * y1;
+    inv_det = det != 0 ? 1 / det : 0;  // degenerate unsnapped: a constant through vertex 0
+  }
+  void operator()(double a, double b, double c, double* p) const {
+    const double d1 = b - a, d2 = c - a;
+    p[1] = (d1 * y2 - d2 * y1) * inv_det;
+    p[2] = (x1 * d2 - x2 * d1) * inv_det;
+    p[0] = a - p[1] * x0 - p[2] * y0;
+  }
+};
+
+// From t.x, t.y (snapped): the area, counter-clockwise order (*swapped: vertices 1 and 2 were
+// exchanged), the edges' ownership and the pixel box within the framebuffer. False when no pixel
+// centre can be covered.
+inline bool setup_edges(Triangle& t, int fb_width, int fb_height, bool* swapped) {
+  t.area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+  if (t.area == 0) return false;
+  *swapped = t.area < 0;
+  if (*swapped) {  // make it counter-clockwise
+    std::swap(t.x[1], t.x[2]), std::swap(t.y[1], t.y[2]);
+    t.area = -t.area;
+  }
+  // Pixel centres (X + 0.5) inside the snapped bounding box.
+  auto lo = [](int64_t v) { return int(std::clamp<int64_t>((v - 128 + 255) >> 8, -1, 1 << 30)); };  // first centre >= v
+  auto hi = [](int64_t v) { return int(std::clamp<int64_t>((v - 128) >> 8, -1, 1 << 30)); };        // last centre <= v
+  t.xmin = std::max(0, lo(std::min({t.x[0], t.x[1], t.x[2]})));
+  t.xmax = std::min(fb_width - 1, hi(std::max({t.x[0], t.x[1], t.x[2]})));
+  t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
+  t.ymax = std::min(fb_height - 1, hi(std::max({t.y[0], t.y[1], t.y[2]})));
+  if (t.xmin > t.xmax || t.ymin > t.ymax) return false;
+  for (int i = 0; i < 3; ++i) {
+    // A pixel exactly on an edge belongs to the triangle for left and bottom edges (GL window
+    // coordinates), so a pixel on an edge shared by two triangles is drawn once.
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const int64_t dx = t.x[k] - t.x[j], dy = t.y[k] - t.y[j];
+    t.inclusive[i] = dy < 0 || (dy == 0 && dx > 0);
+  }
+  return true;
+}
+
+// The planes of depth, 1/w and colour / w (secondary summed in) from the unsnapped positions, as
+// llvmpipe builds them; flat: the colour as a constant, no rounding through 1/w. False when a
+// plane leaves float (1/w near float's limits over a tiny area): not drawn rather than drawn from
+// infinities. `color` and `sec` are per vertex (sec unread without add_secondary).
+template <typename C>
+bool setup_planes(Triangle& t, const glm::dvec3 (&pos)[3], const double (&inv_w)[3], const C* const (&color)[3],
+                  const C* const (&sec)[3], bool flat, bool add_secondary) {
+  const PlaneSolver make(pos);
+  make(pos[0].z, pos[1].z, pos[2].z, t.z);
+  auto channel = [&](int i, int k) {
+    return double((*color[i])[k]) + (add_secondary && k < 3 ? double((*sec[i])[k]) : 0.0);
+  };
+  if (flat) {
+    t.inv_w[0] = 1, t.inv_w[1] = t.inv_w[2] = 0;
+    for (int k = 0; k < 4; ++k) t.c0[k] = float(channel(0, k)), t.cx[k] = t.cy[k] = 0;
+    return true;
+  }
+  double p[3];
+  make(inv_w[0], inv_w[1], inv_w[2], p);
+  for (int i = 0; i < 3; ++i) t.inv_w[i] = float(p[i]);
+  for (int k = 0; k < 4; ++k) {
+    make(channel(0, k) * inv_w[0], channel(1, k) * inv_w[1], channel(2, k) * inv_w[2], p);
+    t.c0[k] = float(p[0]), t.cx[k] = float(p[1]), t.cy[k] = float(p[2]);
+  }
+  for (int k = 0; k < 4; ++k)
+    if (!(std::isfinite(t.c0[k]) && std::isfinite(t.cx[k]) && std::isfinite(t.cy[k]))) return false;
+  return std::isfinite(t.inv_w[0]) && std::isfinite(t.inv_w[1]) && std::isfinite(t.inv_w[2]);
+}
+
+// First and last k with e0 + a k >= thr, for k in [lo, hi]; empty when first > last.
+inline void span(int64_t e0, int64_t a, int64_t thr, int& lo, int& hi) {
+  const int64_t need = thr - e0;  // a k >= need
+  if (a > 0) {
+    const int64_t k = need >= 0 ? (need + a - 1) / a : -((-need) / a);
+    lo = int(std::max<int64_t>(lo, k));
+  } else if (a < 0) {
+    const int64_t b = -a, m = -need;  // k <= m / b
+    const int64_t k = m >= 0 ? m / b : -((-m + b - 1) / b);
+    hi = int(std::min<int64_t>(hi, k));
+  } else if (need > 0) {
+    hi = lo - 1;
+  }
+}
+
+// Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands:
+// rows [b * band_rows, (b + 1) * band_rows) for b % bands == band. `planes()` fills t's planes
+// and is called once, before the first covered pixel (most tiny triangles cover none); false
+// from it drops the triangle.
+template <DepthMode D, typename Planes>
+void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, int band, int bands, Planes&& planes) {
+  // Edge functions at pixel centres in 1/256 units. A pixel is inside when every e_i >= thr_i
+  // (0 for inclusive edges, 1 otherwise); each row's span is solved for, not searched.
+  int64_t a[3], b[3], c[3], thr[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    a[i] = -(t.y[k] - t.y[j]) * 256;  // per pixel in x
+    b[i] = (t.x[k] - t.x[j]) * 256;   // per pixel in y
+    c[i] = (t.x[k] - t.x[j]) * (128 - t.y[j]) - (t.y[k] - t.y[j]) * (128 - t.x[j]);
+    thr[i] = t.inclusive[i] ? 0 : 1;
+  }
+  bool ready = false;
+  uint64_t nonfinite = 0;
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
+  int by = t.ymin / band_rows;
+  by += (band - by % bands + bands) % bands;  // this thread's first band at or after ymin
+  for (; by * band_rows <= t.ymax; by += bands) {
+    const int row_end = std::min(by * band_rows + band_rows - 1, t.ymax);
+    for (int py = std::max(by * band_rows, t.ymin); py <= row_end; ++py) {
+      int lo = t.xmin, hi = t.xmax;
+      if (hi - lo < 24) {  // narrow: step the edges to the span's ends (divisions cost more)
+        int64_t e[3] = {c[0] + b[0] * py + a[0] * lo, c[1] + b[1] * py + a[1] * lo, c[2] + b[2] * py + a[2] * lo};
+        while (lo <= hi && !(e[0] >= thr[0] && e[1] >= thr[1] && e[2] >= thr[2]))
+          ++lo, e[0] += a[0], e[1] += a[1], e[2] += a[2];
+        if (lo > hi) continue;
+        int64_t f[3] = {e[0] + a[0] * (hi - lo), e[1] + a[1] * (hi - lo), e[2] + a[2] * (hi - lo)};
+        while (hi > lo && !(f[0] >= thr[0] && f[1] >= thr[1] && f[2] >= thr[2]))
+          --hi, f[0] -= a[0], f[1] -= a[1], f[2] -= a[2];
+      } else {
+        for (int i = 0; i < 3; ++i) span(c[i] + b[i] * py, a[i], thr[i], lo, hi);
+        if (lo > hi) continue;
+      }
+      if (!ready) {
+        if (!planes()) return;
+        ready = true;
+      }
+      const double cy = py + 0.5, x0 = lo + 0.5;
+      // Planes stepped along the row; the four channels in one SSE register.
+      double z = t.z[0] + t.z[1] * x0 + t.z[2] * cy;
+      float iw = t.inv_w[0] + t.inv_w[1] * float(x0) + t.inv_w[2] * float(cy);
+      __m128 col = _mm_add_ps(_mm_load_ps(t.c0), _mm_add_ps(_mm_mul_ps(_mm_load_ps(t.cx), _mm_set1_ps(float(x0))),
+                                                            _mm_mul_ps(_mm_load_ps(t.cy), _mm_set1_ps(float(cy)))));
+      const __m128 dcol = _mm_load_ps(t.cx);
+      uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
+      uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
+      for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
+        bool pass = true;
+        if constexpr (D != kNoDepth) {
+          const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
+          if constexpr (D == kLess) pass = zi < *zp;
+          else if constexpr (D == kLequal) pass = zi <= *zp;
+          else pass = depth_pass(depth_func, zi, *zp);
+          if (pass) *zp = zi;
+        }
+        if (pass) {
+          // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
+          __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
+          nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
+          cl = _mm_min_ps(_mm_max_ps(cl, zero), one);
+          const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(cl, k255));
+          const __m128i i16 = _mm_packs_epi32(i32, i32);
+          const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
+          std::memcpy(o, &rgba, 4);
+        }
+        z += t.z[1], iw += t.inv_w[1];
+        col = _mm_add_ps(col, dcol);
+      }
+    }
+  }
+  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+}
+
+// The same for a run-time depth function.
+template <typename Planes>
+void rasterize(Framebuffer& fb, Triangle& t, const State& s, int band_rows, int band, int bands, Planes&& planes) {
+  switch (depth_mode(s)) {
+    case kNoDepth: return rasterize<kNoDepth>(fb, t, s.depth_func, band_rows, band, bands, planes);
+    case kLess: return rasterize<kLess>(fb, t, s.depth_func, band_rows, band, bands, planes);
+    case kLequal: return rasterize<kLequal>(fb, t, s.depth_func, band_rows, band, bands, planes);
+    case kAnyDepth: return rasterize<kAnyDepth>(fb, t, s.depth_func, band_rows, band, bands, planes);
+  }
+}
+
+}  // namespace ffc::raster::detail

@@ -1,0 +1,43 @@
+// A fork-join pool kept for the life of a context: a draw hands each thread one share of its work
+// and waits for all of them. Starting threads per draw cost more than small draws' work.
+#pragma once
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <type_traits>
+#include <thread>
+#include <vector>
+
+namespace ffc::raster {
+
+class Workers {
+ public:
+  explicit Workers(int threads);  // threads - 1 are started; the caller is share 0
+  ~Workers();
+  Workers(const Workers&) = delete;
+  Workers& operator=(const Workers&) = delete;
+
+  int size() const { return int(threads_.size()) + 1; }
+  // Calls fn(share) for share in [0, size()), share 0 on the calling thread; returns when all
+  // have returned. Not reentrant.
+  template <typename F>
+  void run(F&& fn) {
+    run_impl(&fn, [](void* f, int share) { (*static_cast<std::remove_reference_t<F>*>(f))(share); });
+  }
+
+ private:
+  void run_impl(void* fn, void (*call)(void*, int));
+  void loop(int share);
+
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::atomic<uint64_t> generation_{0};
+  std::atomic<int> pending_{0};
+  bool stop_ = false;
+  void* fn_ = nullptr;
+  void (*call_)(void*, int) = nullptr;
+};
+
+}  // namespace ffc::raster

@@ -1,0 +1,44 @@
+// Reading client vertex arrays (glVertexPointer, glNormalPointer, glColorPointer): one element's
+// components in double, as the vertex stage takes them.
+#pragma once
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "state/context.h"
+
+namespace ffc::state {
+
+inline size_t type_size(GLenum t) {
+  switch (t) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+// Reads component k of an array element; `normalized` maps integers to [-1,1] or [0,1] as GL 2.1
+// does for normals and colours: signed (2c+1)/(2^b-1), unsigned c/(2^b-1).
+inline double read_component(const uint8_t* p, GLenum type, int k, bool normalized) {
+  switch (type) {
+    case GL_BYTE: { int8_t v; std::memcpy(&v, p + k, 1); return normalized ? (2.0 * v + 1) / 255.0 : v; }
+    case GL_UNSIGNED_BYTE: { uint8_t v = p[k]; return normalized ? v / 255.0 : v; }
+    case GL_SHORT: { int16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? (2.0 * v + 1) / 65535.0 : v; }
+    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? v / 65535.0 : v; }
+    case GL_INT: { int32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? (2.0 * v + 1) / 4294967295.0 : v; }
+    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? v / 4294967295.0 : v; }
+    case GL_FLOAT: { float v; std::memcpy(&v, p + 4 * k, 4); return v; }
+    case GL_DOUBLE: { double v; std::memcpy(&v, p + 8 * k, 8); return v; }
+    default: return 0;
+  }
+}
+
+inline const uint8_t* element(const ClientArray& a, GLint i) {
+  const size_t stride = a.stride ? size_t(a.stride) : a.size * type_size(a.type);
+  return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
+}
+
+}  // namespace ffc::state

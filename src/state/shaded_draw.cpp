@@ -1,0 +1,145 @@
+// The triangle-list path: glDrawArrays and glDrawElements with GL_TRIANGLES while rendering in
+// float. Vertices are lit in batches on every thread into compact records, and the rasterizer
+// reads them in place (raster/triangle_list.h). Same results as the general path, which takes
+// every other primitive, feedback and the double pipeline.
+#include <algorithm>
+
+#include "state/client_arrays.h"
+#include "state/context.h"
+#include "state/float_matrix.h"
+
+namespace ffc::state {
+
+namespace {
+
+constexpr int kBatch = 64;                 // vertices per call of the lighting kernel
+constexpr GLint kParallelShading = 2048;  // below this one thread lights them all
+
+// Components [0, n) of element i, the others from `v`; float arrays read directly.
+inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
+  const uint8_t* p = element(a, i);
+  if (a.type == GL_FLOAT) {
+    float f[4];
+    std::memcpy(f, p, sizeof(float) * size_t(n));
+    for (int k = 0; k < n; ++k) v[k] = f[k];
+    return v;
+  }
+  for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
+  return v;
+}
+
+}  // namespace
+
+bool Context::shaded_path(GLenum mode) const {
+  return mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float;
+}
+
+raster::Workers& Context::workers() {
+  if (!workers_) workers_ = std::make_unique<raster::Workers>(threads_);
+  return *workers_;
+}
+
+raster::State Context::raster_state() const {
+  raster::State rs;
+  rs.viewport = viewport_;
+  rs.depth_range = depth_range_;
+  rs.flat = shade_model_ == GL_FLAT;
+  rs.depth_test = depth_test_;
+  rs.depth_func = depth_func_;
+  rs.cull = cull_face_;
+  rs.cull_mode = cull_mode_;
+  rs.front_face = front_face_;
+  rs.two_side = lighting_ && model_.two_side;
+  rs.add_secondary = lighting_ && model_.separate_specular;
+  rs.float_window = precision_ == Precision::Float;
+  rs.fb_height = fb_.height;
+  return rs;
+}
+
+void Context::shade_range(GLint first, GLint count) {
+  update_vertex_constants();
+  const raster::State rs = raster_state();
+  shaded_.resize(size_t(count));
+  raster::ShadedColors& out = shaded_colors_;
+  out.front.resize(size_t(count));
+  out.back.resize(rs.two_side ? size_t(count) : 0);
+  out.front_sec.resize(rs.add_secondary ? size_t(count) : 0);
+  out.back_sec.resize(rs.two_side && rs.add_secondary ? size_t(count) : 0);
+  const glm::mat4 modelview = modelview_f_.back();
+  const glm::dmat3 inv = normal_matrix_;
+  const double rescale = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
+
+  auto work = [&](GLint lo, GLint hi, bool* zero_normal) {
+    glm::vec4 eye[kBatch], color[kBatch];
+    glm::vec3 normal[kBatch];
+    lighting::Lit<float> lit[kBatch];
+    for (GLint b = lo; b < hi; b += kBatch) {
+      const int m = int(std::min<GLint>(kBatch, hi - b));
+      for (int j = 0; j < m; ++j) {
+        const GLint i = b + j;
+        // Positions rounded as Mesa rounds them (float_matrix.h).
+        const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)));
+        raster::ShadedVertex& v = shaded_[size_t(i - first)];
+        v.clip = fmat::transform(mvp_f_, obj);
+        raster::map_shaded(v, rs);
+        const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
+                                                  : color_;
+        if (!lighting_) {
+          // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa.
+          glm::vec4& f = out.front[size_t(i - first)];
+          for (int k = 0; k < 4; ++k) f[k] = float(!(c[k] < 1) ? 1.0 : c[k] > 0 ? c[k] : 0.0);
+          continue;
+        }
+        eye[j] = fmat::transform(modelview, obj);
+        color[j] = glm::vec4(c);
+        glm::dvec3 n = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, true, glm::dvec4(0)))
+                                             : normal_;
+        n = n * inv;  // row vector times M^-1: the inverse transpose
+        if (normalize_) {
+          const double len = glm::length(n);
+          if (len > 0) n /= len;  // a zero normal stays zero: ambient and emission only
+          else *zero_normal = true;
+        } else if (rescale_normal_ && rescale > 0) {
+          n /= rescale;
+        }
+        normal[j] = glm::vec3(n);
+      }
+      if (!lighting_) continue;
+      kernel_f_(prepared_f_, eye, normal, color, size_t(m), lit);
+      for (int j = 0; j < m; ++j) {
+        const size_t o = size_t(b + j - first);
+        out.front[o] = lit[j].primary[0];
+        if (!out.back.empty()) out.back[o] = lit[j].primary[1];
+        if (!out.front_sec.empty()) out.front_sec[o] = lit[j].secondary[0];
+        if (!out.back_sec.empty()) out.back_sec[o] = lit[j].secondary[1];
+      }
+    }
+  };
+  bool zero[8] = {};
+  if (count < kParallelShading || threads_ == 1) {
+    work(first, first + count, &zero[0]);
+  } else {
+    raster::Workers& w = workers();
+    const int shares = std::min(w.size(), 8);
+    w.run([&](int s) {
+      if (s < shares) work(first + GLint(int64_t(count) * s / shares), first + GLint(int64_t(count) * (s + 1) / shares), &zero[s]);
+    });
+  }
+  if (std::find(std::begin(zero), std::end(zero), true) != std::end(zero)) deviations_.insert(kZeroNormal);
+  // The current normal and colour end as the last element sets them, as one by one.
+  const GLint last = first + count - 1;
+  if (count > 0 && normal_array_.enabled) {
+    const glm::dvec4 n = attribute(normal_array_, last, 3, true, glm::dvec4(0));
+    Normal(n.x, n.y, n.z);
+  }
+  if (count > 0 && color_array_.enabled) {
+    const glm::dvec4 c = attribute(color_array_, last, color_array_.size, true, glm::dvec4(1));
+    Color(c.r, c.g, c.b, c.a);
+  }
+}
+
+void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
+  raster::draw_triangle_list(fb_, raster_state(), shaded_.data(), shaded_colors_, indices, triangles, workers());
+}
+
+}  // namespace ffc::state
