@@ -74,6 +74,22 @@ std::vector<ClipVertex> clip(std::vector<ClipVertex> poly, bool is_line) {
 
 }  // namespace
 
+FloatWindow map_float(const glm::vec4& clip, const State& s) {
+  const glm::ivec4 vp = s.viewport;
+  const float fiw = 1.0f / clip.w;
+  const float nx = clip.x * fiw, ny = clip.y * fiw, nz = clip.z * fiw;
+  const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
+  const float x = std::fma(nx, hw, float(vp[0]) + hw);
+  const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
+  const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
+  FloatWindow w;
+  w.x = x, w.y = float(s.fb_height) - y_down, w.z = std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f);
+  // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
+  w.sx = int64_t(std::nearbyint((x - 0.5f) * 256.0f)) + 128;
+  w.sy = int64_t(s.fb_height - 1) * 256 - int64_t(std::nearbyint((y_down - 0.5f) * 256.0f)) + 128;
+  return w;
+}
+
 WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
   const glm::ivec4 vp = s.viewport;
   WindowVertex w;
@@ -84,17 +100,10 @@ WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
              (ndc.z * (s.depth_range.y - s.depth_range.x) + (s.depth_range.y + s.depth_range.x)) * 0.5};
     return w;
   }
-  const float fiw = 1.0f / float(clip.w);
-  const float nx = float(clip.x) * fiw, ny = float(clip.y) * fiw, nz = float(clip.z) * fiw;
-  const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
-  const float x = std::fma(nx, hw, float(vp[0]) + hw);
-  const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
-  const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
-  w.pos = {x, double(float(s.fb_height) - y_down), std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f)};
-  // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
+  const FloatWindow f = map_float(glm::vec4(clip), s);
+  w.pos = {f.x, f.y, f.z};
   w.snapped = true;
-  w.sx = int64_t(std::nearbyint((x - 0.5f) * 256.0f)) + 128;
-  w.sy = int64_t(s.fb_height - 1) * 256 - int64_t(std::nearbyint((y_down - 0.5f) * 256.0f)) + 128;
+  w.sx = f.sx, w.sy = f.sy;
   return w;
 }
 

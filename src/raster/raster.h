@@ -51,6 +51,12 @@ struct WindowVertex {
   int64_t sx = 0, sy = 0;
 };
 
+// The float path of map_to_window: window x, y (GL rows, up), z, and the snapped position.
+struct FloatWindow {
+  float x, y, z;
+  int64_t sx, sy;
+};
+FloatWindow map_float(const glm::vec4& clip, const State& s);
 // A clip-space position in window coordinates (see State::float_window); colours left empty.
 WindowVertex map_to_window(const glm::dvec4& clip, const State& s);
 // Bit i set: outside view-volume plane i (x>w, x<-w, y>w, y<-w, z>w, z<-w, w<=0). 0: inside.

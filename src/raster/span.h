@@ -55,6 +55,16 @@ struct PlaneSolver {
 // exchanged), the edges' ownership and the pixel box within the framebuffer. False when no pixel
 // centre can be covered.
 inline bool setup_edges(Triangle& t, int fb_width, int fb_height, bool* swapped) {
+  // Pixel centres (X + 0.5) inside the snapped bounding box: at high subdivision most triangles
+  // have none, so this comes first.
+  auto lo = [](int64_t v) { return int(std::clamp<int64_t>((v - 128 + 255) >> 8, -1, 1 << 30)); };  // first centre >= v
+  auto hi = [](int64_t v) { return int(std::clamp<int64_t>((v - 128) >> 8, -1, 1 << 30)); };        // last centre <= v
+  t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
+  t.ymax = std::min(fb_height - 1, hi(std::max({t.y[0], t.y[1], t.y[2]})));
+  if (t.ymin > t.ymax) return false;
+  t.xmin = std::max(0, lo(std::min({t.x[0], t.x[1], t.x[2]})));
+  t.xmax = std::min(fb_width - 1, hi(std::max({t.x[0], t.x[1], t.x[2]})));
+  if (t.xmin > t.xmax) return false;
   t.area = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
   if (t.area == 0) return false;
   *swapped = t.area < 0;
@@ -62,14 +72,6 @@ inline bool setup_edges(Triangle& t, int fb_width, int fb_height, bool* swapped)
     std::swap(t.x[1], t.x[2]), std::swap(t.y[1], t.y[2]);
     t.area = -t.area;
   }
-  // Pixel centres (X + 0.5) inside the snapped bounding box.
-  auto lo = [](int64_t v) { return int(std::clamp<int64_t>((v - 128 + 255) >> 8, -1, 1 << 30)); };  // first centre >= v
-  auto hi = [](int64_t v) { return int(std::clamp<int64_t>((v - 128) >> 8, -1, 1 << 30)); };        // last centre <= v
-  t.xmin = std::max(0, lo(std::min({t.x[0], t.x[1], t.x[2]})));
-  t.xmax = std::min(fb_width - 1, hi(std::max({t.x[0], t.x[1], t.x[2]})));
-  t.ymin = std::max(0, lo(std::min({t.y[0], t.y[1], t.y[2]})));
-  t.ymax = std::min(fb_height - 1, hi(std::max({t.y[0], t.y[1], t.y[2]})));
-  if (t.xmin > t.xmax || t.ymin > t.ymax) return false;
   for (int i = 0; i < 3; ++i) {
     // A pixel exactly on an edge belongs to the triangle for left and bottom edges (GL window
     // coordinates), so a pixel on an edge shared by two triangles is drawn once.
@@ -143,58 +145,92 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, i
   bool ready = false;
   uint64_t nonfinite = 0;
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
-  int by = t.ymin / band_rows;
-  by += (band - by % bands + bands) % bands;  // this thread's first band at or after ymin
-  for (; by * band_rows <= t.ymax; by += bands) {
-    const int row_end = std::min(by * band_rows + band_rows - 1, t.ymax);
-    for (int py = std::max(by * band_rows, t.ymin); py <= row_end; ++py) {
-      int lo = t.xmin, hi = t.xmax;
-      if (hi - lo < 24) {  // narrow: step the edges to the span's ends (divisions cost more)
-        int64_t e[3] = {c[0] + b[0] * py + a[0] * lo, c[1] + b[1] * py + a[1] * lo, c[2] + b[2] * py + a[2] * lo};
-        while (lo <= hi && !(e[0] >= thr[0] && e[1] >= thr[1] && e[2] >= thr[2]))
-          ++lo, e[0] += a[0], e[1] += a[1], e[2] += a[2];
-        if (lo > hi) continue;
-        int64_t f[3] = {e[0] + a[0] * (hi - lo), e[1] + a[1] * (hi - lo), e[2] + a[2] * (hi - lo)};
-        while (hi > lo && !(f[0] >= thr[0] && f[1] >= thr[1] && f[2] >= thr[2]))
-          --hi, f[0] -= a[0], f[1] -= a[1], f[2] -= a[2];
-      } else {
+  // Pixels lo..hi of row py are covered: planes at the first of them, stepped along the row.
+  auto draw_span = [&](int py, int lo, int hi) {
+    if (!ready) {
+      if (!planes()) return false;
+      ready = true;
+    }
+    const double cy = py + 0.5, x0 = lo + 0.5;
+    double z = t.z[0] + t.z[1] * x0 + t.z[2] * cy;
+    float iw = t.inv_w[0] + t.inv_w[1] * float(x0) + t.inv_w[2] * float(cy);
+    __m128 col = _mm_add_ps(_mm_load_ps(t.c0), _mm_add_ps(_mm_mul_ps(_mm_load_ps(t.cx), _mm_set1_ps(float(x0))),
+                                                          _mm_mul_ps(_mm_load_ps(t.cy), _mm_set1_ps(float(cy)))));
+    const __m128 dcol = _mm_load_ps(t.cx);
+    uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
+    uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
+    for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
+      bool pass = true;
+      if constexpr (D != kNoDepth) {
+        const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
+        if constexpr (D == kLess) pass = zi < *zp;
+        else if constexpr (D == kLequal) pass = zi <= *zp;
+        else pass = depth_pass(depth_func, zi, *zp);
+        if (pass) *zp = zi;
+      }
+      if (pass) {
+        // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
+        __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
+        nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
+        cl = _mm_min_ps(_mm_max_ps(cl, zero), one);
+        const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(cl, k255));
+        const __m128i i16 = _mm_packs_epi32(i32, i32);
+        const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
+        std::memcpy(o, &rgba, 4);
+      }
+      z += t.z[1], iw += t.inv_w[1];
+      col = _mm_add_ps(col, dcol);
+    }
+    return true;
+  };
+  int first_band = t.ymin / band_rows;
+  first_band += (band - first_band % bands + bands) % bands;  // this thread's first band at or after ymin
+  const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]});
+  const int64_t ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
+  if (ext_x < 31 * 256 && ext_y < 31 * 256) {
+    // Small (most triangles): edge functions relative to the box's first pixel centre fit in 32
+    // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.
+    const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;
+    int32_t e0[3], eb[3];
+    __m128i step[3], row_lanes[3], limit[3];
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      const int32_t dx = int32_t(t.x[k] - t.x[j]), dy = int32_t(t.y[k] - t.y[j]);
+      const int32_t ea = -dy * 256;
+      eb[i] = dx * 256;
+      e0[i] = dx * int32_t(oy - t.y[j]) - dy * int32_t(ox - t.x[j]);
+      row_lanes[i] = _mm_set_epi32(3 * ea, 2 * ea, ea, 0);
+      step[i] = _mm_set1_epi32(4 * ea);
+      limit[i] = _mm_set1_epi32(int32_t(thr[i]) - 1);  // e >= thr  as  e > thr - 1
+    }
+    const int width = t.xmax - t.xmin + 1;
+    const uint32_t keep = width >= 32 ? ~0u : (1u << width) - 1;
+    for (int by = first_band; by * band_rows <= t.ymax; by += bands) {
+      const int row_end = std::min(by * band_rows + band_rows - 1, t.ymax);
+      for (int py = std::max(by * band_rows, t.ymin); py <= row_end; ++py) {
+        const int32_t dy = py - t.ymin;
+        __m128i v[3];
+        for (int i = 0; i < 3; ++i) v[i] = _mm_add_epi32(_mm_set1_epi32(e0[i] + eb[i] * dy), row_lanes[i]);
+        uint32_t mask = 0;
+        for (int chunk = 0; chunk < width; chunk += 4) {
+          const __m128i in = _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi32(v[0], limit[0]), _mm_cmpgt_epi32(v[1], limit[1])),
+                                           _mm_cmpgt_epi32(v[2], limit[2]));
+          mask |= uint32_t(_mm_movemask_ps(_mm_castsi128_ps(in))) << chunk;
+          for (int i = 0; i < 3; ++i) v[i] = _mm_add_epi32(v[i], step[i]);
+        }
+        mask &= keep;
+        if (!mask) continue;
+        if (!draw_span(py, t.xmin + __builtin_ctz(mask), t.xmin + 31 - __builtin_clz(mask))) return;
+      }
+    }
+  } else {
+    for (int by = first_band; by * band_rows <= t.ymax; by += bands) {
+      const int row_end = std::min(by * band_rows + band_rows - 1, t.ymax);
+      for (int py = std::max(by * band_rows, t.ymin); py <= row_end; ++py) {
+        int lo = t.xmin, hi = t.xmax;
         for (int i = 0; i < 3; ++i) span(c[i] + b[i] * py, a[i], thr[i], lo, hi);
         if (lo > hi) continue;
-      }
-      if (!ready) {
-        if (!planes()) return;
-        ready = true;
-      }
-      const double cy = py + 0.5, x0 = lo + 0.5;
-      // Planes stepped along the row; the four channels in one SSE register.
-      double z = t.z[0] + t.z[1] * x0 + t.z[2] * cy;
-      float iw = t.inv_w[0] + t.inv_w[1] * float(x0) + t.inv_w[2] * float(cy);
-      __m128 col = _mm_add_ps(_mm_load_ps(t.c0), _mm_add_ps(_mm_mul_ps(_mm_load_ps(t.cx), _mm_set1_ps(float(x0))),
-                                                            _mm_mul_ps(_mm_load_ps(t.cy), _mm_set1_ps(float(cy)))));
-      const __m128 dcol = _mm_load_ps(t.cx);
-      uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
-      uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
-      for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
-        bool pass = true;
-        if constexpr (D != kNoDepth) {
-          const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
-          if constexpr (D == kLess) pass = zi < *zp;
-          else if constexpr (D == kLequal) pass = zi <= *zp;
-          else pass = depth_pass(depth_func, zi, *zp);
-          if (pass) *zp = zi;
-        }
-        if (pass) {
-          // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
-          __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
-          nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
-          cl = _mm_min_ps(_mm_max_ps(cl, zero), one);
-          const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(cl, k255));
-          const __m128i i16 = _mm_packs_epi32(i32, i32);
-          const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
-          std::memcpy(o, &rgba, 4);
-        }
-        z += t.z[1], iw += t.inv_w[1];
-        col = _mm_add_ps(col, dcol);
+        if (!draw_span(py, lo, hi)) return;
       }
     }
   }

@@ -2,31 +2,36 @@
 
 #include "raster/span.h"
 
+#include <emmintrin.h>
+#include <xmmintrin.h>
+
+#include <array>
+
 namespace ffc::raster {
 
-void map_shaded(ShadedVertex& v, const State& s) {
+uint16_t map_shaded(ShadedVertex& v, const State& s) {
   const glm::dvec4 clip(v.clip);
   v.inv_w = 1 / clip.w;
   v.outside = outside_planes(clip);
-  if (v.outside) return;
-  const WindowVertex w = map_to_window(clip, s);  // one definition of the mapping
+  if (v.outside) return kNoBand;
+  const FloatWindow w = map_float(v.clip, s);
   constexpr int64_t kLimit = int64_t(1) << 30;
   if (w.sx < -kLimit || w.sx > kLimit || w.sy < -kLimit || w.sy > kLimit) {
     v.outside = kUnsnappable;
-    return;
+    return kNoBand;
   }
-  v.x = float(w.pos.x), v.y = float(w.pos.y), v.z = float(w.pos.z);
+  v.x = w.x, v.y = w.y, v.z = w.z;
   v.sx = int32_t(w.sx), v.sy = int32_t(w.sy);
+  return uint16_t(std::clamp(int((w.sy - 128) >> 8), 0, s.fb_height - 1) / kBandRows);
 }
 
 namespace {
-
-constexpr int kBandRows = 16;
 
 struct List {
   Framebuffer& fb;
   const State& s;
   const ShadedVertex* v;
+  const uint16_t* bands;
   const ShadedColors& colors;
   const uint32_t* idx;
   size_t count;
@@ -57,25 +62,66 @@ void draw_clipped(const List& l, const size_t (&vi)[3], int band, int bands) {
   }
 }
 
+// setup_planes for a smooth triangle without secondary colour, two values per SSE2 register: the
+// same operations in the same order as detail::PlaneSolver, so the same bits, in fewer steps.
+bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], const glm::vec4* const (&c)[3]) {
+  const double X0 = v[0]->x, Y0 = v[0]->y;
+  const double x1 = double(v[1]->x) - X0, y1 = double(v[1]->y) - Y0;
+  const double x2 = double(v[2]->x) - X0, y2 = double(v[2]->y) - Y0;
+  const double det = x1 * y2 - x2 * y1;
+  const __m128d inv = _mm_set1_pd(det != 0 ? 1 / det : 0);
+  const __m128d vx0 = _mm_set1_pd(X0), vy0 = _mm_set1_pd(Y0), vx1 = _mm_set1_pd(x1), vy1 = _mm_set1_pd(y1),
+                vx2 = _mm_set1_pd(x2), vy2 = _mm_set1_pd(y2);
+  auto solve = [&](__m128d a, __m128d b, __m128d cc, __m128d (&p)[3]) {
+    const __m128d d1 = _mm_sub_pd(b, a), d2 = _mm_sub_pd(cc, a);
+    p[1] = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(d1, vy2), _mm_mul_pd(d2, vy1)), inv);
+    p[2] = _mm_mul_pd(_mm_sub_pd(_mm_mul_pd(vx1, d2), _mm_mul_pd(vx2, d1)), inv);
+    p[0] = _mm_sub_pd(_mm_sub_pd(a, _mm_mul_pd(p[1], vx0)), _mm_mul_pd(p[2], vy0));
+  };
+  __m128d p[3];
+  solve(_mm_set_pd(v[0]->inv_w, v[0]->z), _mm_set_pd(v[1]->inv_w, v[1]->z), _mm_set_pd(v[2]->inv_w, v[2]->z), p);
+  double zw[2];
+  for (int i = 0; i < 3; ++i) {
+    _mm_storeu_pd(zw, p[i]);
+    t.z[i] = zw[0], t.inv_w[i] = float(zw[1]);
+  }
+  __m128d w[3];
+  for (int i = 0; i < 3; ++i) w[i] = _mm_set1_pd(v[i]->inv_w);
+  alignas(16) float out[3][4];
+  for (int half = 0; half < 2; ++half) {  // (r, g), then (b, a)
+    __m128d cw[3];
+    for (int i = 0; i < 3; ++i) cw[i] = _mm_mul_pd(_mm_cvtps_pd(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&(*c[i])[2 * half]))), w[i]);
+    solve(cw[0], cw[1], cw[2], p);
+    for (int i = 0; i < 3; ++i) _mm_storel_pi(reinterpret_cast<__m64*>(&out[i][2 * half]), _mm_cvtpd_ps(p[i]));
+  }
+  std::memcpy(t.c0, out[0], 16), std::memcpy(t.cx, out[1], 16), std::memcpy(t.cy, out[2], 16);
+  // Planes beyond float: not drawn rather than drawn from infinities (as setup_planes).
+  const __m128 all = _mm_add_ps(_mm_add_ps(_mm_load_ps(out[0]), _mm_load_ps(out[1])), _mm_load_ps(out[2]));
+  const __m128 iw = _mm_set_ps(0, t.inv_w[2], t.inv_w[1], t.inv_w[0]);
+  const __m128 probe = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(all, _mm_setzero_ps()), _mm_mul_ps(iw, _mm_setzero_ps())), _mm_setzero_ps());
+  return _mm_movemask_ps(_mm_cmpunord_ps(probe, probe)) == 0;
+}
+
 template <detail::DepthMode D>
 void draw_share(const List& l, int band, int bands) {
   const State& s = l.s;
   const bool facing = s.cull || s.two_side;
+  const bool fast_planes = !s.flat && !s.add_secondary;
   const int fb_w = l.fb.width, fb_h = l.fb.height;
+  std::array<bool, 16384 / kBandRows + 1> mine;  // this thread's bands of rows
+  for (size_t b = 0; b < mine.size(); ++b) mine[b] = int(b) % bands == band;
   for (size_t tri = 0; tri < l.count; ++tri) {
     const size_t vi[3] = {l.idx ? l.idx[3 * tri] : 3 * tri, l.idx ? l.idx[3 * tri + 1] : 3 * tri + 1,
                           l.idx ? l.idx[3 * tri + 2] : 3 * tri + 2};
+    // Most triangles at high subdivision lie in one band, and most bands are another thread's:
+    // skipped from a table that stays in cache, without touching the vertices.
+    const uint16_t b0 = l.bands[vi[0]];
+    if (b0 == l.bands[vi[1]] && b0 == l.bands[vi[2]] && b0 != kNoBand && !mine[b0]) continue;
     const ShadedVertex* p[3] = {&l.v[vi[0]], &l.v[vi[1]], &l.v[vi[2]]};
     if (p[0]->outside | p[1]->outside | p[2]->outside) {
       draw_clipped(l, vi, band, bands);
       continue;
     }
-    // Rows first: most triangles at high subdivision lie in one band, and most bands are another
-    // thread's.
-    const int32_t ylo = std::min({p[0]->sy, p[1]->sy, p[2]->sy}), yhi = std::max({p[0]->sy, p[1]->sy, p[2]->sy});
-    const int row_lo = std::max(0, (ylo - 128 + 255) >> 8), row_hi = std::min(fb_h - 1, (yhi - 128) >> 8);
-    if (row_lo > row_hi) continue;
-    if (row_lo / kBandRows == row_hi / kBandRows && (row_lo / kBandRows) % bands != band) continue;
     Triangle t;
     for (int i = 0; i < 3; ++i) t.x[i] = p[i]->sx, t.y[i] = p[i]->sy;
     bool back = false;
@@ -88,6 +134,11 @@ void draw_share(const List& l, int band, int bands) {
     size_t order[3] = {vi[0], vi[1], vi[2]};
     if (swapped) std::swap(order[1], order[2]);
     auto planes = [&] {
+      if (fast_planes && !(back && s.two_side)) {
+        const ShadedVertex* const pv[3] = {&l.v[order[0]], &l.v[order[1]], &l.v[order[2]]};
+        const glm::vec4* const pc[3] = {&l.colors.front[order[0]], &l.colors.front[order[1]], &l.colors.front[order[2]]};
+        return smooth_planes(t, pv, pc);
+      }
       const bool use_back = back && s.two_side;
       const std::vector<glm::vec4>& col = use_back ? l.colors.back : l.colors.front;
       const std::vector<glm::vec4>& sec = use_back ? l.colors.back_sec : l.colors.front_sec;
@@ -111,9 +162,9 @@ void draw_share(const List& l, int band, int bands) {
 
 }  // namespace
 
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertex* v, const ShadedColors& colors,
-                        const uint32_t* idx, size_t triangles, Workers& workers) {
-  const List l{fb, s, v, colors, idx, triangles};
+void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertex* v, const uint16_t* vertex_bands,
+                        const ShadedColors& colors, const uint32_t* idx, size_t triangles, Workers& workers) {
+  const List l{fb, s, v, vertex_bands, colors, idx, triangles};
   const int bands = std::max(1, std::min(workers.size(), (fb.height + kBandRows - 1) / kBandRows));
   auto share = [&](int band) {
     if (band >= bands) return;

@@ -22,8 +22,14 @@ struct ShadedVertex {
 };
 constexpr uint32_t kUnsnappable = 1u << 8;  // inside, but too far out for 32-bit snapped coordinates
 
-// Fills v.inv_w, the window fields and v.outside from v.clip.
-void map_shaded(ShadedVertex& v, const State& s);
+// Threads own interleaved bands of kBandRows rows: band b belongs to thread b % threads.
+constexpr int kBandRows = 16;
+constexpr uint16_t kNoBand = 0xFFFF;
+
+// Fills v.inv_w, the window fields and v.outside from v.clip. Returns the band of the row the
+// vertex lies in (clamped to the framebuffer), kNoBand when it is not mapped: a triangle whose
+// three vertices share a band draws only in that band.
+uint16_t map_shaded(ShadedVertex& v, const State& s);
 
 // Lit colours per vertex; only those the state reads are filled (back: two-sided lighting,
 // secondary: separate specular).
@@ -34,7 +40,8 @@ struct ShadedColors {
 // Draws triangle t from vertices (idx[3t], idx[3t+1], idx[3t+2]), or (3t, 3t+1, 3t+2) when idx is
 // null; the third is the provoking vertex. Triangles that need clipping take clip_and_map. Not
 // for feedback, and s.float_window must be set.
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertex* v, const ShadedColors& colors,
-                        const uint32_t* idx, size_t triangles, Workers& workers);
+// `bands` holds map_shaded's result per vertex.
+void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertex* v, const uint16_t* bands,
+                        const ShadedColors& colors, const uint32_t* idx, size_t triangles, Workers& workers);
 
 }  // namespace ffc::raster

@@ -935,8 +935,18 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   // Each array element in the indices' range is transformed and lit once, however often the
   // indices name it (a post-transform cache covering the whole draw).
   const uint8_t* p = static_cast<const uint8_t*>(indices);
-  elements_.resize(size_t(count));
   uint32_t lo = UINT32_MAX, hi = 0;
+  if (type == GL_UNSIGNED_INT && count > 0 && shaded_path(mode)) {
+    // The triangle-list path reads 32-bit indices in place when they start at 0.
+    const auto* u = static_cast<const uint32_t*>(indices);
+    for (GLsizei i = 0; i < count; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
+    if (lo == 0) {
+      shade_range(0, GLint(hi) + 1);
+      return draw_shaded(u, size_t(count) / 3);
+    }
+  }
+  elements_.resize(size_t(count));
+  lo = UINT32_MAX, hi = 0;
   for (GLsizei i = 0; i < count; ++i) {
     elements_[i] = uint32_t(read_component(p, type, i, false));
     lo = std::min(lo, elements_[i]), hi = std::max(hi, elements_[i]);

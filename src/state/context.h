@@ -212,6 +212,7 @@ class Context {
   int threads_ = 2;
   std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
   std::vector<raster::ShadedVertex> shaded_;  // the triangle-list path's vertices
+  std::vector<uint16_t> shaded_bands_;
   raster::ShadedColors shaded_colors_;
 
   // Feedback

@@ -60,6 +60,7 @@ void Context::shade_range(GLint first, GLint count) {
   update_vertex_constants();
   const raster::State rs = raster_state();
   shaded_.resize(size_t(count));
+  shaded_bands_.resize(size_t(count));
   raster::ShadedColors& out = shaded_colors_;
   out.front.resize(size_t(count));
   out.back.resize(rs.two_side ? size_t(count) : 0);
@@ -81,7 +82,7 @@ void Context::shade_range(GLint first, GLint count) {
         const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)));
         raster::ShadedVertex& v = shaded_[size_t(i - first)];
         v.clip = fmat::transform(mvp_f_, obj);
-        raster::map_shaded(v, rs);
+        shaded_bands_[size_t(i - first)] = raster::map_shaded(v, rs);
         const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
                                                   : color_;
         if (!lighting_) {
@@ -139,7 +140,7 @@ void Context::shade_range(GLint first, GLint count) {
 }
 
 void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
-  raster::draw_triangle_list(fb_, raster_state(), shaded_.data(), shaded_colors_, indices, triangles, workers());
+  raster::draw_triangle_list(fb_, raster_state(), shaded_.data(), shaded_bands_.data(), shaded_colors_, indices, triangles, workers());
 }
 
 }  // namespace ffc::state
