@@ -21,7 +21,7 @@ V3<T> rgb(const glm::dvec4& c) {
 // NaN-propagating max and a NaN-dropping min): a NaN (inf * 0 from an infinite attenuation, a NaN
 // input; unspecified by GL 2.1, 2.1.1) never leaves the lighting stage.
 template <typename T>
-V4<T> saturate(const V4<T>& v) {
+[[gnu::always_inline]] inline V4<T> saturate(const V4<T>& v) {
   V4<T> r;
   for (int k = 0; k < 4; ++k) r[k] = !(v[k] < T(1)) ? T(1) : v[k] > T(0) ? v[k] : T(0);
   return r;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #include <thread>
 
 namespace ffc::raster {
@@ -74,7 +75,16 @@ std::vector<ClipVertex> clip(std::vector<ClipVertex> poly, bool is_line) {
 
 }  // namespace
 
-FloatWindow map_float(const glm::vec4& clip, const State& s) {
+namespace {
+// nearbyint(v) for a float, as one cvtss2si in the current (round-to-even) mode when in range.
+int64_t round_even(float v) {
+  return std::fabs(v) < 0x1p30f ? _mm_cvtss_si32(_mm_set_ss(v)) : int64_t(std::nearbyint(v));
+}
+}  // namespace
+
+// Built twice, with and without FMA instructions (chosen at load time): std::fma is one
+// instruction where the CPU has it, a library call otherwise; the same bits either way.
+__attribute__((target_clones("fma", "default"))) FloatWindow map_float(const glm::vec4& clip, const State& s) {
   const glm::ivec4 vp = s.viewport;
   const float fiw = 1.0f / clip.w;
   const float nx = clip.x * fiw, ny = clip.y * fiw, nz = clip.z * fiw;
@@ -85,8 +95,8 @@ FloatWindow map_float(const glm::vec4& clip, const State& s) {
   FloatWindow w;
   w.x = x, w.y = float(s.fb_height) - y_down, w.z = std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f);
   // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
-  w.sx = int64_t(std::nearbyint((x - 0.5f) * 256.0f)) + 128;
-  w.sy = int64_t(s.fb_height - 1) * 256 - int64_t(std::nearbyint((y_down - 0.5f) * 256.0f)) + 128;
+  w.sx = round_even((x - 0.5f) * 256.0f) + 128;
+  w.sy = int64_t(s.fb_height - 1) * 256 - round_even((y_down - 0.5f) * 256.0f) + 128;
   return w;
 }
 
@@ -105,17 +115,6 @@ WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
   w.snapped = true;
   w.sx = f.sx, w.sy = f.sy;
   return w;
-}
-
-// Whether 1/w is a normal float, so that the divide and the 1/w planes of setup stay finite.
-static bool w_mappable(double w) { return std::abs(w) >= 0x1p-126 && std::abs(w) <= 0x1p126; }
-
-unsigned outside_planes(const glm::dvec4& c) {
-  // Bit 7: no window position exists: a NaN or infinite coordinate (which compares false against
-  // every plane), or a w whose 1/w is not a normal float. Never "inside".
-  return unsigned(c.x > c.w) | unsigned(c.x < -c.w) << 1 | unsigned(c.y > c.w) << 2 | unsigned(c.y < -c.w) << 3 |
-         unsigned(c.z > c.w) << 4 | unsigned(c.z < -c.w) << 5 | unsigned(!(c.w > 0)) << 6 |
-         unsigned(!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && w_mappable(c.w))) << 7;
 }
 
 bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s) {

@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
@@ -59,8 +60,19 @@ struct FloatWindow {
 FloatWindow map_float(const glm::vec4& clip, const State& s);
 // A clip-space position in window coordinates (see State::float_window); colours left empty.
 WindowVertex map_to_window(const glm::dvec4& clip, const State& s);
+// Whether 1/w is a normal float, so that the divide and the 1/w planes of setup stay finite.
+inline bool w_mappable(double w) { return std::abs(w) >= 0x1p-126 && std::abs(w) <= 0x1p126; }
+
 // Bit i set: outside view-volume plane i (x>w, x<-w, y>w, y<-w, z>w, z<-w, w<=0). 0: inside.
-unsigned outside_planes(const glm::dvec4& clip);
+// Bit 7: no window position exists: a NaN or infinite coordinate (which compares false against
+// every plane), or a w whose 1/w is not a normal float. Never "inside". For float or double
+// coordinates (the same answer for a float's value in either).
+template <typename V>
+unsigned outside_planes(const V& c) {
+  return unsigned(c.x > c.w) | unsigned(c.x < -c.w) << 1 | unsigned(c.y > c.w) << 2 | unsigned(c.y < -c.w) << 3 |
+         unsigned(c.z > c.w) << 4 | unsigned(c.z < -c.w) << 5 | unsigned(!(c.w > 0)) << 6 |
+         unsigned(!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && w_mappable(c.w))) << 7;
+}
 bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s);
 bool culled(bool back_facing, const State& s);
 

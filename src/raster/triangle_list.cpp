@@ -10,9 +10,8 @@
 namespace ffc::raster {
 
 uint16_t map_shaded(ShadedVertex& v, const State& s) {
-  const glm::dvec4 clip(v.clip);
-  v.inv_w = 1 / clip.w;
-  v.outside = outside_planes(clip);
+  v.inv_w = 1 / double(v.clip.w);
+  v.outside = outside_planes(v.clip);
   if (v.outside) return kNoBand;
   const FloatWindow w = map_float(v.clip, s);
   constexpr int64_t kLimit = int64_t(1) << 30;

@@ -19,9 +19,11 @@ constexpr GLint kParallelShading = 2048;  // below this one thread lights them a
 inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
   const uint8_t* p = element(a, i);
   if (a.type == GL_FLOAT) {
-    float f[4];
-    std::memcpy(f, p, sizeof(float) * size_t(n));
-    for (int k = 0; k < n; ++k) v[k] = f[k];
+    for (int k = 0; k < n; ++k) {
+      float f;
+      std::memcpy(&f, p + 4 * k, 4);
+      v[k] = f;
+    }
     return v;
   }
   for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
