@@ -206,18 +206,18 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
 
 void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
                     int threads) {
-  constexpr int kBandRows = 16;
   size_t total = 0;
   for (const auto* l : lists) total += l->size();
   auto work = [&](int band, int bands) {
+    const detail::Bands mine(band, bands);
     for (const auto* l : lists)
       for (const Triangle& t : *l) {
         // Most triangles fall in one band: skip the others' without touching more of them.
-        if (t.ymin / kBandRows == t.ymax / kBandRows && (t.ymin / kBandRows) % bands != band) continue;
+        if (t.ymin / kBandRows == t.ymax / kBandRows && !mine.owns(std::clamp(t.ymin / kBandRows, 0, detail::Bands::kMax))) continue;
         Triangle c = t;  // clip the box to the framebuffer
         c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
         c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
-        if (c.xmin <= c.xmax && c.ymin <= c.ymax) detail::rasterize(fb, c, s, kBandRows, band, bands, [] { return true; });
+        if (c.xmin <= c.xmax && c.ymin <= c.ymax) detail::rasterize(fb, c, s, mine, [] { return true; });
       }
   };
   threads = std::max(1, std::min(threads, (fb.height + kBandRows - 1) / kBandRows));
@@ -257,7 +257,10 @@ void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const Sta
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& cc, double cd) {
   if (color) {
     const uint8_t c[4] = {to_unorm8(cc.r), to_unorm8(cc.g), to_unorm8(cc.b), to_unorm8(cc.a)};
-    for (size_t i = 0; i < fb.color.size(); i += 4) std::copy(c, c + 4, &fb.color[i]);
+    // One pixel, then the filled part copied onto what follows it, doubling: a few memcpy calls.
+    const size_t n = fb.color.size();
+    if (n >= 4) std::memcpy(fb.color.data(), c, 4);
+    for (size_t done = 4; done < n; done *= 2) std::memcpy(fb.color.data() + done, fb.color.data(), std::min(done, n - done));
   }
   if (depth) std::fill(fb.depth.begin(), fb.depth.end(), uint32_t(std::clamp(cd, 0.0, 1.0) * 0xFFFFFF + 0.5));
 }

@@ -18,6 +18,9 @@ struct Vertex {
   glm::dvec4 front_sec, back_sec;    // secondary (separate specular) colours
 };
 
+// Threads share the rows out in interleaved bands of this many.
+constexpr int kBandRows = 16;
+
 // GL's window: row 0 at the bottom.
 struct Framebuffer {
   int width = 0, height = 0;

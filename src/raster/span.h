@@ -13,6 +13,17 @@ namespace ffc::raster::detail {
 
 extern std::atomic<uint64_t> g_nonfinite_fragments;
 
+// The rows one thread draws: bands of kBandRows rows, band b belonging to thread b % count.
+struct Bands {
+  static constexpr int kMax = 16384 / kBandRows + 1;
+  int mine, count;
+  std::array<uint16_t, kMax + 1> next;  // next[b]: this thread's first band at or after b
+  Bands(int mine_, int count_) : mine(mine_), count(count_) {
+    for (int b = 0; b <= kMax; ++b) next[size_t(b)] = uint16_t(b + (mine - b % count + count) % count);
+  }
+  bool owns(int b) const { return next[size_t(b)] == b; }
+};
+
 // The depth functions the row loop is compiled for; the others go through depth_pass.
 enum DepthMode { kNoDepth, kLess, kLequal, kAnyDepth };
 inline DepthMode depth_mode(const State& s) {
@@ -126,22 +137,16 @@ inline void span(int64_t e0, int64_t a, int64_t thr, int& lo, int& hi) {
   }
 }
 
-// Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands:
-// rows [b * band_rows, (b + 1) * band_rows) for b % bands == band. `planes()` fills t's planes
+// Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands.
+// `planes()` fills t's planes
 // and is called once, before the first covered pixel (most tiny triangles cover none); false
 // from it drops the triangle.
 template <DepthMode D, typename Planes>
-void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, int band, int bands, Planes&& planes) {
+void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
   // Edge functions at pixel centres in 1/256 units. A pixel is inside when every e_i >= thr_i
-  // (0 for inclusive edges, 1 otherwise); each row's span is solved for, not searched.
-  int64_t a[3], b[3], c[3], thr[3];
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    a[i] = -(t.y[k] - t.y[j]) * 256;  // per pixel in x
-    b[i] = (t.x[k] - t.x[j]) * 256;   // per pixel in y
-    c[i] = (t.x[k] - t.x[j]) * (128 - t.y[j]) - (t.y[k] - t.y[j]) * (128 - t.x[j]);
-    thr[i] = t.inclusive[i] ? 0 : 1;
-  }
+  // (0 for inclusive edges, 1 otherwise).
+  int64_t thr[3];
+  for (int i = 0; i < 3; ++i) thr[i] = t.inclusive[i] ? 0 : 1;
   bool ready = false;
   uint64_t nonfinite = 0;
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
@@ -183,8 +188,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, i
     }
     return true;
   };
-  int first_band = t.ymin / band_rows;
-  first_band += (band - first_band % bands + bands) % bands;  // this thread's first band at or after ymin
+  const int first_band = bands.next[size_t(t.ymin / kBandRows)];
   const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]});
   const int64_t ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
   if (ext_x < 31 * 256 && ext_y < 31 * 256) {
@@ -205,9 +209,9 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, i
     }
     const int width = t.xmax - t.xmin + 1;
     const uint32_t keep = width >= 32 ? ~0u : (1u << width) - 1;
-    for (int by = first_band; by * band_rows <= t.ymax; by += bands) {
-      const int row_end = std::min(by * band_rows + band_rows - 1, t.ymax);
-      for (int py = std::max(by * band_rows, t.ymin); py <= row_end; ++py) {
+    for (int by = first_band; by * kBandRows <= t.ymax; by += bands.count) {
+      const int row_end = std::min(by * kBandRows + kBandRows - 1, t.ymax);
+      for (int py = std::max(by * kBandRows, t.ymin); py <= row_end; ++py) {
         const int32_t dy = py - t.ymin;
         __m128i v[3];
         for (int i = 0; i < 3; ++i) v[i] = _mm_add_epi32(_mm_set1_epi32(e0[i] + eb[i] * dy), row_lanes[i]);
@@ -224,9 +228,17 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, i
       }
     }
   } else {
-    for (int by = first_band; by * band_rows <= t.ymax; by += bands) {
-      const int row_end = std::min(by * band_rows + band_rows - 1, t.ymax);
-      for (int py = std::max(by * band_rows, t.ymin); py <= row_end; ++py) {
+    // Large: each row's span is solved for in 64 bits, not searched.
+    int64_t a[3], b[3], c[3];
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      a[i] = -(t.y[k] - t.y[j]) * 256;  // per pixel in x
+      b[i] = (t.x[k] - t.x[j]) * 256;   // per pixel in y
+      c[i] = (t.x[k] - t.x[j]) * (128 - t.y[j]) - (t.y[k] - t.y[j]) * (128 - t.x[j]);
+    }
+    for (int by = first_band; by * kBandRows <= t.ymax; by += bands.count) {
+      const int row_end = std::min(by * kBandRows + kBandRows - 1, t.ymax);
+      for (int py = std::max(by * kBandRows, t.ymin); py <= row_end; ++py) {
         int lo = t.xmin, hi = t.xmax;
         for (int i = 0; i < 3; ++i) span(c[i] + b[i] * py, a[i], thr[i], lo, hi);
         if (lo > hi) continue;
@@ -239,12 +251,12 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, int band_rows, i
 
 // The same for a run-time depth function.
 template <typename Planes>
-void rasterize(Framebuffer& fb, Triangle& t, const State& s, int band_rows, int band, int bands, Planes&& planes) {
+void rasterize(Framebuffer& fb, Triangle& t, const State& s, const Bands& bands, Planes&& planes) {
   switch (depth_mode(s)) {
-    case kNoDepth: return rasterize<kNoDepth>(fb, t, s.depth_func, band_rows, band, bands, planes);
-    case kLess: return rasterize<kLess>(fb, t, s.depth_func, band_rows, band, bands, planes);
-    case kLequal: return rasterize<kLequal>(fb, t, s.depth_func, band_rows, band, bands, planes);
-    case kAnyDepth: return rasterize<kAnyDepth>(fb, t, s.depth_func, band_rows, band, bands, planes);
+    case kNoDepth: return rasterize<kNoDepth>(fb, t, s.depth_func, bands, planes);
+    case kLess: return rasterize<kLess>(fb, t, s.depth_func, bands, planes);
+    case kLequal: return rasterize<kLequal>(fb, t, s.depth_func, bands, planes);
+    case kAnyDepth: return rasterize<kAnyDepth>(fb, t, s.depth_func, bands, planes);
   }
 }
 

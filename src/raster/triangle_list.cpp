@@ -38,7 +38,7 @@ struct List {
 
 // A triangle with a vertex outside the view volume: clipped, fanned and set up as the general
 // path does, then drawn in this thread's bands.
-void draw_clipped(const List& l, const size_t (&vi)[3], int band, int bands) {
+void draw_clipped(const List& l, const size_t (&vi)[3], const detail::Bands& bands) {
   const bool two_side = l.s.two_side, sec = l.s.add_secondary;
   auto full = [&](size_t i) {
     Vertex r;
@@ -57,7 +57,7 @@ void draw_clipped(const List& l, const size_t (&vi)[3], int band, int bands) {
     t.xmin = std::max(t.xmin, 0), t.ymin = std::max(t.ymin, 0);
     t.xmax = std::min(t.xmax, l.fb.width - 1), t.ymax = std::min(t.ymax, l.fb.height - 1);
     if (t.xmin <= t.xmax && t.ymin <= t.ymax)
-      detail::rasterize(l.fb, t, l.s, kBandRows, band, bands, [] { return true; });
+      detail::rasterize(l.fb, t, l.s, bands, [] { return true; });
   }
 }
 
@@ -101,24 +101,33 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], const glm::ve
   return _mm_movemask_ps(_mm_cmpunord_ps(probe, probe)) == 0;
 }
 
+constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
+
 template <detail::DepthMode D>
 void draw_share(const List& l, int band, int bands) {
   const State& s = l.s;
   const bool facing = s.cull || s.two_side;
   const bool fast_planes = !s.flat && !s.add_secondary;
   const int fb_w = l.fb.width, fb_h = l.fb.height;
-  std::array<bool, 16384 / kBandRows + 1> mine;  // this thread's bands of rows
-  for (size_t b = 0; b < mine.size(); ++b) mine[b] = int(b) % bands == band;
+  const detail::Bands mine(band, bands);
   for (size_t tri = 0; tri < l.count; ++tri) {
     const size_t vi[3] = {l.idx ? l.idx[3 * tri] : 3 * tri, l.idx ? l.idx[3 * tri + 1] : 3 * tri + 1,
                           l.idx ? l.idx[3 * tri + 2] : 3 * tri + 2};
+    if (l.idx && tri + kAhead < l.count) {
+      // Indexed vertices are scattered in memory: ask for a later triangle's while this one is drawn.
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t ahead = l.idx[3 * (tri + kAhead) + k];
+        __builtin_prefetch(&l.v[ahead]);
+        __builtin_prefetch(&l.colors.front[ahead]);
+      }
+    }
     // Most triangles at high subdivision lie in one band, and most bands are another thread's:
     // skipped from a table that stays in cache, without touching the vertices.
     const uint16_t b0 = l.bands[vi[0]];
-    if (b0 == l.bands[vi[1]] && b0 == l.bands[vi[2]] && b0 != kNoBand && !mine[b0]) continue;
+    if (b0 == l.bands[vi[1]] && b0 == l.bands[vi[2]] && b0 != kNoBand && !mine.owns(b0)) continue;
     const ShadedVertex* p[3] = {&l.v[vi[0]], &l.v[vi[1]], &l.v[vi[2]]};
     if (p[0]->outside | p[1]->outside | p[2]->outside) {
-      draw_clipped(l, vi, band, bands);
+      draw_clipped(l, vi, mine);
       continue;
     }
     Triangle t;
@@ -155,7 +164,7 @@ void draw_share(const List& l, int band, int bands) {
       }
       return detail::setup_planes(t, pos, inv_w, c, sc, s.flat, s.add_secondary);
     };
-    detail::rasterize<D>(l.fb, t, s.depth_func, kBandRows, band, bands, planes);
+    detail::rasterize<D>(l.fb, t, s.depth_func, mine, planes);
   }
 }
 

@@ -22,8 +22,6 @@ struct ShadedVertex {
 };
 constexpr uint32_t kUnsnappable = 1u << 8;  // inside, but too far out for 32-bit snapped coordinates
 
-// Threads own interleaved bands of kBandRows rows: band b belongs to thread b % threads.
-constexpr int kBandRows = 16;
 constexpr uint16_t kNoBand = 0xFFFF;
 
 // Fills v.inv_w, the window fields and v.outside from v.clip. Returns the band of the row the
