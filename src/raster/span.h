@@ -189,9 +189,26 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
     return true;
   };
   const int first_band = bands.next[size_t(t.ymin / kBandRows)];
-  const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]});
-  const int64_t ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
-  if (ext_x < 31 * 256 && ext_y < 31 * 256) {
+  if (t.xmax - t.xmin <= 1 && t.ymax - t.ymin <= 1) {
+    // Tiny (most triangles at high subdivision): at most four pixel centres, each tested directly.
+    for (int py = t.ymin; py <= t.ymax; ++py) {
+      if (!bands.owns(py / kBandRows)) continue;
+      const int64_t Y = int64_t(py) * 256 + 128;
+      int lo = t.xmax + 1, hi = t.xmin - 1;
+      for (int px = t.xmin; px <= t.xmax; ++px) {
+        const int64_t X = int64_t(px) * 256 + 128;
+        bool in = true;
+        for (int i = 0; i < 3; ++i) {
+          const int j = (i + 1) % 3, k = (i + 2) % 3;
+          in &= (t.x[k] - t.x[j]) * (Y - t.y[j]) - (t.y[k] - t.y[j]) * (X - t.x[j]) >= thr[i];
+        }
+        if (in) lo = std::min(lo, px), hi = px;
+      }
+      if (lo <= hi && !draw_span(py, lo, hi)) return;
+    }
+  } else if (const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]}),
+             ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
+             ext_x < 31 * 256 && ext_y < 31 * 256) {
     // Small (most triangles): edge functions relative to the box's first pixel centre fit in 32
     // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.
     const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;

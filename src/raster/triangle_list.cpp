@@ -130,6 +130,11 @@ void draw_share(const List& l, int band, int bands) {
       draw_clipped(l, vi, mine);
       continue;
     }
+    // No pixel centre between the vertices' rows or columns: at high subdivision, many.
+    const int32_t ylo = std::min({p[0]->sy, p[1]->sy, p[2]->sy}), yhi = std::max({p[0]->sy, p[1]->sy, p[2]->sy});
+    if ((ylo - 128 + 255) >> 8 > (yhi - 128) >> 8) continue;
+    const int32_t xlo = std::min({p[0]->sx, p[1]->sx, p[2]->sx}), xhi = std::max({p[0]->sx, p[1]->sx, p[2]->sx});
+    if ((xlo - 128 + 255) >> 8 > (xhi - 128) >> 8) continue;
     Triangle t;
     for (int i = 0; i < 3; ++i) t.x[i] = p[i]->sx, t.y[i] = p[i]->sy;
     bool back = false;
