@@ -9,19 +9,17 @@
 
 namespace ffc::raster {
 
-uint16_t map_shaded(ShadedVertex& v, const State& s) {
-  v.inv_w = 1 / double(v.clip.w);
-  v.outside = outside_planes(v.clip);
-  if (v.outside) return kNoBand;
-  const FloatWindow w = map_float(v.clip, s);
-  constexpr int64_t kLimit = int64_t(1) << 30;
-  if (w.sx < -kLimit || w.sx > kLimit || w.sy < -kLimit || w.sy > kLimit) {
-    v.outside = kUnsnappable;
-    return kNoBand;
-  }
+void map_shaded(ShadedVertices& vs, size_t i, const State& s) {
+  const glm::vec4& clip = vs.clip[i];
+  ShadedVertex& v = vs.hot[i];
+  v.w = clip.w;
+  vs.snapped[i] = {kNotMapped, 0};
+  if (outside_planes(clip)) return;
+  const FloatWindow w = map_float(clip, s);
+  constexpr int64_t kLimit = int64_t(1) << 30;  // inside, but too far out for 32-bit coordinates: clipped
+  if (w.sx < -kLimit || w.sx > kLimit || w.sy < -kLimit || w.sy > kLimit) return;
   v.x = w.x, v.y = w.y, v.z = w.z;
-  v.sx = int32_t(w.sx), v.sy = int32_t(w.sy);
-  return uint16_t(std::clamp(int((w.sy - 128) >> 8), 0, s.fb_height - 1) / kBandRows);
+  vs.snapped[i] = {int32_t(w.sx), int32_t(w.sy)};
 }
 
 namespace {
@@ -29,9 +27,7 @@ namespace {
 struct List {
   Framebuffer& fb;
   const State& s;
-  const ShadedVertex* v;
-  const uint16_t* bands;
-  const ShadedColors& colors;
+  const ShadedVertices& vs;
   const uint32_t* idx;
   size_t count;
 };
@@ -42,11 +38,11 @@ void draw_clipped(const List& l, const size_t (&vi)[3], const detail::Bands& ban
   const bool two_side = l.s.two_side, sec = l.s.add_secondary;
   auto full = [&](size_t i) {
     Vertex r;
-    r.clip = glm::dvec4(l.v[i].clip);
-    r.front = glm::dvec4(l.colors.front[i]);
-    r.back = two_side ? glm::dvec4(l.colors.back[i]) : r.front;
-    r.front_sec = sec ? glm::dvec4(l.colors.front_sec[i]) : glm::dvec4(0);
-    r.back_sec = sec && two_side ? glm::dvec4(l.colors.back_sec[i]) : r.front_sec;
+    r.clip = glm::dvec4(l.vs.clip[i]);
+    r.front = glm::dvec4(l.vs.hot[i].color);
+    r.back = two_side ? glm::dvec4(l.vs.back[i]) : r.front;
+    r.front_sec = sec ? glm::dvec4(l.vs.front_sec[i]) : glm::dvec4(0);
+    r.back_sec = sec && two_side ? glm::dvec4(l.vs.back_sec[i]) : r.front_sec;
     return r;
   };
   const std::vector<Vertex> prim = {full(vi[0]), full(vi[1]), full(vi[2])};
@@ -63,7 +59,7 @@ void draw_clipped(const List& l, const size_t (&vi)[3], const detail::Bands& ban
 
 // setup_planes for a smooth triangle without secondary colour, two values per SSE2 register: the
 // same operations in the same order as detail::PlaneSolver, so the same bits, in fewer steps.
-bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], const glm::vec4* const (&c)[3]) {
+bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
   const double X0 = v[0]->x, Y0 = v[0]->y;
   const double x1 = double(v[1]->x) - X0, y1 = double(v[1]->y) - Y0;
   const double x2 = double(v[2]->x) - X0, y2 = double(v[2]->y) - Y0;
@@ -78,26 +74,34 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], const glm::ve
     p[0] = _mm_sub_pd(_mm_sub_pd(a, _mm_mul_pd(p[1], vx0)), _mm_mul_pd(p[2], vy0));
   };
   __m128d p[3];
-  solve(_mm_set_pd(v[0]->inv_w, v[0]->z), _mm_set_pd(v[1]->inv_w, v[1]->z), _mm_set_pd(v[2]->inv_w, v[2]->z), p);
+  // 1/w in double, as map_to_window takes it.
+  const __m128d w01 = _mm_div_pd(_mm_set1_pd(1), _mm_set_pd(v[1]->w, v[0]->w));
+  const __m128d w2 = _mm_div_sd(_mm_set_sd(1), _mm_set_sd(v[2]->w));
+  const __m128d w[3] = {_mm_unpacklo_pd(w01, w01), _mm_unpackhi_pd(w01, w01), _mm_unpacklo_pd(w2, w2)};
+  solve(_mm_unpacklo_pd(_mm_set_sd(v[0]->z), w[0]), _mm_unpacklo_pd(_mm_set_sd(v[1]->z), w[1]),
+        _mm_unpacklo_pd(_mm_set_sd(v[2]->z), w[2]), p);
   double zw[2];
   for (int i = 0; i < 3; ++i) {
     _mm_storeu_pd(zw, p[i]);
     t.z[i] = zw[0], t.inv_w[i] = float(zw[1]);
   }
-  __m128d w[3];
-  for (int i = 0; i < 3; ++i) w[i] = _mm_set1_pd(v[i]->inv_w);
-  alignas(16) float out[3][4];
-  for (int half = 0; half < 2; ++half) {  // (r, g), then (b, a)
+  // Colour / w, (r, g) and (b, a) apart; the halves joined in registers (storing them to memory
+  // and loading them as one stalls store forwarding).
+  __m128d half[2][3];
+  for (int h = 0; h < 2; ++h) {
     __m128d cw[3];
-    for (int i = 0; i < 3; ++i) cw[i] = _mm_mul_pd(_mm_cvtps_pd(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&(*c[i])[2 * half]))), w[i]);
-    solve(cw[0], cw[1], cw[2], p);
-    for (int i = 0; i < 3; ++i) _mm_storel_pi(reinterpret_cast<__m64*>(&out[i][2 * half]), _mm_cvtpd_ps(p[i]));
+    for (int i = 0; i < 3; ++i)
+      cw[i] = _mm_mul_pd(_mm_cvtps_pd(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(&v[i]->color[2 * h]))), w[i]);
+    solve(cw[0], cw[1], cw[2], half[h]);
   }
-  std::memcpy(t.c0, out[0], 16), std::memcpy(t.cx, out[1], 16), std::memcpy(t.cy, out[2], 16);
+  __m128 out[3];
+  for (int i = 0; i < 3; ++i) out[i] = _mm_movelh_ps(_mm_cvtpd_ps(half[0][i]), _mm_cvtpd_ps(half[1][i]));
+  _mm_store_ps(t.c0, out[0]), _mm_store_ps(t.cx, out[1]), _mm_store_ps(t.cy, out[2]);
   // Planes beyond float: not drawn rather than drawn from infinities (as setup_planes).
-  const __m128 all = _mm_add_ps(_mm_add_ps(_mm_load_ps(out[0]), _mm_load_ps(out[1])), _mm_load_ps(out[2]));
-  const __m128 iw = _mm_set_ps(0, t.inv_w[2], t.inv_w[1], t.inv_w[0]);
-  const __m128 probe = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(all, _mm_setzero_ps()), _mm_mul_ps(iw, _mm_setzero_ps())), _mm_setzero_ps());
+  // x * 0 is 0 for a finite x and NaN otherwise; a sum of those is NaN when any is.
+  const __m128 zero = _mm_setzero_ps(), iw = _mm_set_ps(0, t.inv_w[2], t.inv_w[1], t.inv_w[0]);
+  const __m128 probe = _mm_add_ps(_mm_add_ps(_mm_mul_ps(out[0], zero), _mm_mul_ps(out[1], zero)),
+                                  _mm_add_ps(_mm_mul_ps(out[2], zero), _mm_mul_ps(iw, zero)));
   return _mm_movemask_ps(_mm_cmpunord_ps(probe, probe)) == 0;
 }
 
@@ -113,33 +117,29 @@ void draw_share(const List& l, int band, int bands) {
   for (size_t tri = 0; tri < l.count; ++tri) {
     const size_t vi[3] = {l.idx ? l.idx[3 * tri] : 3 * tri, l.idx ? l.idx[3 * tri + 1] : 3 * tri + 1,
                           l.idx ? l.idx[3 * tri + 2] : 3 * tri + 2};
-    if (l.idx && tri + kAhead < l.count) {
-      // Indexed vertices are scattered in memory: ask for a later triangle's while this one is drawn.
+    if (l.idx && tri + kAhead < l.count)  // indexed vertices are scattered: ask for them early
       for (int k = 0; k < 3; ++k) {
         const uint32_t ahead = l.idx[3 * (tri + kAhead) + k];
-        __builtin_prefetch(&l.v[ahead]);
-        __builtin_prefetch(&l.colors.front[ahead]);
+        __builtin_prefetch(&l.vs.snapped[ahead]), __builtin_prefetch(&l.vs.hot[ahead]);
       }
-    }
-    // Most triangles at high subdivision lie in one band, and most bands are another thread's:
-    // skipped from a table that stays in cache, without touching the vertices.
-    const uint16_t b0 = l.bands[vi[0]];
-    if (b0 == l.bands[vi[1]] && b0 == l.bands[vi[2]] && b0 != kNoBand && !mine.owns(b0)) continue;
-    const ShadedVertex* p[3] = {&l.v[vi[0]], &l.v[vi[1]], &l.v[vi[2]]};
-    if (p[0]->outside | p[1]->outside | p[2]->outside) {
+    const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
+    if (p[0].x == kNotMapped || p[1].x == kNotMapped || p[2].x == kNotMapped) {
       draw_clipped(l, vi, mine);
       continue;
     }
-    // No pixel centre between the vertices' rows or columns: at high subdivision, many.
-    const int32_t ylo = std::min({p[0]->sy, p[1]->sy, p[2]->sy}), yhi = std::max({p[0]->sy, p[1]->sy, p[2]->sy});
-    if ((ylo - 128 + 255) >> 8 > (yhi - 128) >> 8) continue;
-    const int32_t xlo = std::min({p[0]->sx, p[1]->sx, p[2]->sx}), xhi = std::max({p[0]->sx, p[1]->sx, p[2]->sx});
-    if ((xlo - 128 + 255) >> 8 > (xhi - 128) >> 8) continue;
+    // Rows first: most triangles at high subdivision enclose no pixel centre, or only centres
+    // in another thread's band.
+    const int32_t ylo = std::min({p[0].y, p[1].y, p[2].y}), yhi = std::max({p[0].y, p[1].y, p[2].y});
+    const int row_lo = std::max(0, (ylo - 128 + 255) >> 8), row_hi = std::min(fb_h - 1, (yhi - 128) >> 8);
+    if (row_lo > row_hi) continue;
+    if (row_lo / kBandRows == row_hi / kBandRows && !mine.owns(row_lo / kBandRows)) continue;
+    const int32_t xlo = std::min({p[0].x, p[1].x, p[2].x}), xhi = std::max({p[0].x, p[1].x, p[2].x});
+    if (std::max(0, (xlo - 128 + 255) >> 8) > std::min(fb_w - 1, (xhi - 128) >> 8)) continue;
     Triangle t;
-    for (int i = 0; i < 3; ++i) t.x[i] = p[i]->sx, t.y[i] = p[i]->sy;
+    for (int i = 0; i < 3; ++i) t.x[i] = p[i].x, t.y[i] = p[i].y;
     bool back = false;
     if (facing) {
-      back = back_facing_triangle(glm::dvec4(p[0]->clip), glm::dvec4(p[1]->clip), glm::dvec4(p[2]->clip), s);
+      back = back_facing_triangle(glm::dvec4(l.vs.clip[vi[0]]), glm::dvec4(l.vs.clip[vi[1]]), glm::dvec4(l.vs.clip[vi[2]]), s);
       if (culled(back, s)) continue;
     }
     bool swapped = false;
@@ -147,25 +147,19 @@ void draw_share(const List& l, int band, int bands) {
     size_t order[3] = {vi[0], vi[1], vi[2]};
     if (swapped) std::swap(order[1], order[2]);
     auto planes = [&] {
-      if (fast_planes && !(back && s.two_side)) {
-        const ShadedVertex* const pv[3] = {&l.v[order[0]], &l.v[order[1]], &l.v[order[2]]};
-        const glm::vec4* const pc[3] = {&l.colors.front[order[0]], &l.colors.front[order[1]], &l.colors.front[order[2]]};
-        return smooth_planes(t, pv, pc);
-      }
       const bool use_back = back && s.two_side;
-      const std::vector<glm::vec4>& col = use_back ? l.colors.back : l.colors.front;
-      const std::vector<glm::vec4>& sec = use_back ? l.colors.back_sec : l.colors.front_sec;
+      const ShadedVertex* const v[3] = {&l.vs.hot[order[0]], &l.vs.hot[order[1]], &l.vs.hot[order[2]]};
+      if (fast_planes && !use_back) return smooth_planes(t, v);
       glm::dvec3 pos[3];
       double inv_w[3];
       const glm::vec4* c[3];
       const glm::vec4* sc[3];
       for (int i = 0; i < 3; ++i) {
-        const ShadedVertex& sv = l.v[order[i]];
-        pos[i] = {sv.x, sv.y, sv.z};
-        inv_w[i] = sv.inv_w;
+        pos[i] = {v[i]->x, v[i]->y, v[i]->z};
+        inv_w[i] = 1 / double(v[i]->w);
         const size_t from = s.flat ? vi[2] : order[i];  // flat: the provoking vertex's colours
-        c[i] = &col[from];
-        sc[i] = s.add_secondary ? &sec[from] : c[i];
+        c[i] = use_back ? &l.vs.back[from] : &l.vs.hot[from].color;
+        sc[i] = !s.add_secondary ? c[i] : use_back ? &l.vs.back_sec[from] : &l.vs.front_sec[from];
       }
       return detail::setup_planes(t, pos, inv_w, c, sc, s.flat, s.add_secondary);
     };
@@ -175,9 +169,9 @@ void draw_share(const List& l, int band, int bands) {
 
 }  // namespace
 
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertex* v, const uint16_t* vertex_bands,
-                        const ShadedColors& colors, const uint32_t* idx, size_t triangles, Workers& workers) {
-  const List l{fb, s, v, vertex_bands, colors, idx, triangles};
+void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
+                        size_t triangles, Workers& workers) {
+  const List l{fb, s, vs, idx, triangles};
   const int bands = std::max(1, std::min(workers.size(), (fb.height + kBandRows - 1) / kBandRows));
   auto share = [&](int band) {
     if (band >= bands) return;

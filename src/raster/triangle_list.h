@@ -3,6 +3,7 @@
 // what falls in its own bands of rows, so no triangle is stored between setup and drawing and the
 // planes of a triangle that covers no pixel centre are never computed.
 #pragma once
+#include <climits>
 #include <cstdint>
 #include <vector>
 
@@ -11,35 +12,42 @@
 
 namespace ffc::raster {
 
-// A vertex after the vertex stage, as the triangle stage reads it (48 bytes). Float path only:
-// the window fields are map_to_window's with State::float_window, bit for bit.
-struct ShadedVertex {
-  glm::vec4 clip;
-  double inv_w;      // 1 / clip.w
-  float x, y, z;     // window position
-  int32_t sx, sy;    // snapped to 1/256 pixel, pixel centres at +128
-  uint32_t outside;  // outside_planes(clip), or kUnsnappable; 0: the window fields are set
+// A vertex after the vertex stage, as setup reads it: 32 bytes, two to a cache line. Float path
+// only: the window position is map_to_window's with State::float_window, bit for bit.
+struct alignas(32) ShadedVertex {
+  float x, y, z;    // window position
+  float w;          // clip w (1/w is taken in double, as map_to_window does)
+  glm::vec4 color;  // primary colour for the front (flat: its own; the provoking one is chosen later)
 };
-constexpr uint32_t kUnsnappable = 1u << 8;  // inside, but too far out for 32-bit snapped coordinates
 
-constexpr uint16_t kNoBand = 0xFFFF;
-
-// Fills v.inv_w, the window fields and v.outside from v.clip. Returns the band of the row the
-// vertex lies in (clamped to the framebuffer), kNoBand when it is not mapped: a triangle whose
-// three vertices share a band draws only in that band.
-uint16_t map_shaded(ShadedVertex& v, const State& s);
-
-// Lit colours per vertex; only those the state reads are filled (back: two-sided lighting,
-// secondary: separate specular).
-struct ShadedColors {
-  std::vector<glm::vec4> front, back, front_sec, back_sec;
+// Its position snapped to 1/256 pixel (pixel centres at +128), kept apart: the triangle walk reads
+// only these, 8 bytes a vertex, and most triangles at high subdivision need nothing more.
+struct Snapped {
+  int32_t x, y;
 };
+constexpr int32_t kNotMapped = INT32_MIN;  // x of a vertex that needs clipping
+
+// The vertices of a draw, as arrays. back, front_sec and back_sec are filled only when the state
+// reads them (two-sided lighting, separate specular).
+struct ShadedVertices {
+  std::vector<ShadedVertex> hot;
+  std::vector<Snapped> snapped;
+  std::vector<glm::vec4> clip;  // for clipping and facing
+  std::vector<glm::vec4> back, front_sec, back_sec;
+  void resize(size_t n, bool two_side, bool secondary) {
+    hot.resize(n), snapped.resize(n), clip.resize(n);
+    back.resize(two_side ? n : 0), front_sec.resize(secondary ? n : 0), back_sec.resize(two_side && secondary ? n : 0);
+  }
+};
+
+// Vertex i's window position and snapped position from its clip coordinates (vs.clip[i]); the
+// colours are the caller's.
+void map_shaded(ShadedVertices& vs, size_t i, const State& s);
 
 // Draws triangle t from vertices (idx[3t], idx[3t+1], idx[3t+2]), or (3t, 3t+1, 3t+2) when idx is
 // null; the third is the provoking vertex. Triangles that need clipping take clip_and_map. Not
 // for feedback, and s.float_window must be set.
-// `bands` holds map_shaded's result per vertex.
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertex* v, const uint16_t* bands,
-                        const ShadedColors& colors, const uint32_t* idx, size_t triangles, Workers& workers);
+void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
+                        size_t triangles, Workers& workers);
 
 }  // namespace ffc::raster

@@ -211,9 +211,7 @@ class Context {
   std::vector<raster::WindowVertex> window_;  // per vertex inside: its window position
   int threads_ = 2;
   std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
-  std::vector<raster::ShadedVertex> shaded_;  // the triangle-list path's vertices
-  std::vector<uint16_t> shaded_bands_;
-  raster::ShadedColors shaded_colors_;
+  raster::ShadedVertices shaded_;  // the triangle-list path's vertices
 
   // Feedback
   GLenum render_mode_ = GL_RENDER;

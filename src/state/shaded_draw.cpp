@@ -61,13 +61,8 @@ raster::State Context::raster_state() const {
 void Context::shade_range(GLint first, GLint count) {
   update_vertex_constants();
   const raster::State rs = raster_state();
-  shaded_.resize(size_t(count));
-  shaded_bands_.resize(size_t(count));
-  raster::ShadedColors& out = shaded_colors_;
-  out.front.resize(size_t(count));
-  out.back.resize(rs.two_side ? size_t(count) : 0);
-  out.front_sec.resize(rs.add_secondary ? size_t(count) : 0);
-  out.back_sec.resize(rs.two_side && rs.add_secondary ? size_t(count) : 0);
+  raster::ShadedVertices& out = shaded_;
+  out.resize(size_t(count), rs.two_side, rs.add_secondary);
   const glm::mat4 modelview = modelview_f_.back();
   const glm::dmat3 inv = normal_matrix_;
   const double rescale = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
@@ -82,14 +77,14 @@ void Context::shade_range(GLint first, GLint count) {
         const GLint i = b + j;
         // Positions rounded as Mesa rounds them (float_matrix.h).
         const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)));
-        raster::ShadedVertex& v = shaded_[size_t(i - first)];
-        v.clip = fmat::transform(mvp_f_, obj);
-        shaded_bands_[size_t(i - first)] = raster::map_shaded(v, rs);
+        const size_t o = size_t(i - first);
+        out.clip[o] = fmat::transform(mvp_f_, obj);
+        raster::map_shaded(out, o, rs);
         const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
                                                   : color_;
         if (!lighting_) {
           // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa.
-          glm::vec4& f = out.front[size_t(i - first)];
+          glm::vec4& f = out.hot[o].color;
           for (int k = 0; k < 4; ++k) f[k] = float(!(c[k] < 1) ? 1.0 : c[k] > 0 ? c[k] : 0.0);
           continue;
         }
@@ -111,7 +106,7 @@ void Context::shade_range(GLint first, GLint count) {
       kernel_f_(prepared_f_, eye, normal, color, size_t(m), lit);
       for (int j = 0; j < m; ++j) {
         const size_t o = size_t(b + j - first);
-        out.front[o] = lit[j].primary[0];
+        out.hot[o].color = lit[j].primary[0];
         if (!out.back.empty()) out.back[o] = lit[j].primary[1];
         if (!out.front_sec.empty()) out.front_sec[o] = lit[j].secondary[0];
         if (!out.back_sec.empty()) out.back_sec[o] = lit[j].secondary[1];
@@ -142,7 +137,7 @@ void Context::shade_range(GLint first, GLint count) {
 }
 
 void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
-  raster::draw_triangle_list(fb_, raster_state(), shaded_.data(), shaded_bands_.data(), shaded_colors_, indices, triangles, workers());
+  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers());
 }
 
 }  // namespace ffc::state
