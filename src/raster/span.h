@@ -88,7 +88,7 @@ inline bool setup_edges(Triangle& t, int fb_width, int fb_height, bool* swapped)
     // coordinates), so a pixel on an edge shared by two triangles is drawn once.
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     const int64_t dx = t.x[k] - t.x[j], dy = t.y[k] - t.y[j];
-    t.inclusive[i] = dy < 0 || (dy == 0 && dx > 0);
+    t.inclusive[i] = (dy < 0) | ((dy == 0) & (dx > 0));
   }
   return true;
 }
@@ -189,26 +189,30 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
     return true;
   };
   const int first_band = bands.next[size_t(t.ymin / kBandRows)];
-  if (t.xmax - t.xmin <= 1 && t.ymax - t.ymin <= 1) {
-    // Tiny (most triangles at high subdivision): at most four pixel centres, each tested directly.
-    for (int py = t.ymin; py <= t.ymax; ++py) {
-      if (!bands.owns(py / kBandRows)) continue;
-      const int64_t Y = int64_t(py) * 256 + 128;
-      int lo = t.xmax + 1, hi = t.xmin - 1;
-      for (int px = t.xmin; px <= t.xmax; ++px) {
-        const int64_t X = int64_t(px) * 256 + 128;
-        bool in = true;
-        for (int i = 0; i < 3; ++i) {
-          const int j = (i + 1) % 3, k = (i + 2) % 3;
-          in &= (t.x[k] - t.x[j]) * (Y - t.y[j]) - (t.y[k] - t.y[j]) * (X - t.x[j]) >= thr[i];
-        }
-        if (in) lo = std::min(lo, px), hi = px;
-      }
-      if (lo <= hi && !draw_span(py, lo, hi)) return;
+  const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]});
+  const int64_t ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
+  if (t.xmax - t.xmin <= 1 && t.ymax - t.ymin <= 1 && ext_x < 4 * 256 && ext_y < 4 * 256) {
+    // Tiny (most triangles at high subdivision): the at most 2x2 pixel centres of the box tested
+    // at once, lanes (0,0) (1,0) (0,1) (1,1), edge functions relative to the first centre in 32
+    // bits (the vertices lie within a few pixels of it).
+    const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;
+    __m128i in = _mm_set1_epi32(-1);
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      const int32_t dx = int32_t(t.x[k] - t.x[j]), dy = int32_t(t.y[k] - t.y[j]);
+      const int32_t e = dx * int32_t(oy - t.y[j]) - dy * int32_t(ox - t.x[j]), ea = -dy * 256, eb = dx * 256;
+      const __m128i lanes = _mm_set_epi32(e + ea + eb, e + eb, e + ea, e);
+      in = _mm_and_si128(in, _mm_cmpgt_epi32(lanes, _mm_set1_epi32(int32_t(thr[i]) - 1)));
     }
-  } else if (const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]}),
-             ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
-             ext_x < 31 * 256 && ext_y < 31 * 256) {
+    unsigned mask = unsigned(_mm_movemask_ps(_mm_castsi128_ps(in)));
+    if (t.xmax == t.xmin) mask &= 0x5;
+    if (t.ymax == t.ymin) mask &= 0x3;
+    for (int row = 0; mask; ++row, mask >>= 2) {
+      const int py = t.ymin + row;
+      if (!(mask & 3) || !bands.owns(py / kBandRows)) continue;
+      if (!draw_span(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
+    }
+  } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
     // Small (most triangles): edge functions relative to the box's first pixel centre fit in 32
     // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.
     const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;
