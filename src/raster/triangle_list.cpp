@@ -30,11 +30,20 @@ struct List {
   const ShadedVertices& vs;
   const uint32_t* idx;
   size_t count;
+  size_t base;  // unindexed: triangle t is vertices 3 (base + t) ..
+  std::array<size_t, 3> corners(size_t tri) const {
+    if (!idx) return {3 * (base + tri), 3 * (base + tri) + 1, 3 * (base + tri) + 2};
+    return {idx[3 * tri], idx[3 * tri + 1], idx[3 * tri + 2]};
+  }
 };
+
+constexpr uint32_t kClipped = 1u << 31;  // a binned triangle that needs clipping
+constexpr int kMaxThreads = 64;
+constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
 
 // A triangle with a vertex outside the view volume: clipped, fanned and set up as the general
 // path does, then drawn in this thread's bands.
-void draw_clipped(const List& l, const size_t (&vi)[3], const detail::Bands& bands) {
+void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const detail::Bands& bands) {
   const bool two_side = l.s.two_side, sec = l.s.add_secondary;
   auto full = [&](size_t i) {
     Vertex r;
@@ -105,85 +114,138 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
   return _mm_movemask_ps(_mm_cmpunord_ps(probe, probe)) == 0;
 }
 
-constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
-
+// Sets up and draws, in this thread's bands, a triangle whose vertices are all mapped.
 template <detail::DepthMode D>
-void draw_share(const List& l, int band, int bands) {
+void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)[3], const detail::Bands& mine) {
   const State& s = l.s;
-  const bool facing = s.cull || s.two_side;
-  const bool fast_planes = !s.flat && !s.add_secondary;
+  Triangle t;
+  for (int i = 0; i < 3; ++i) t.x[i] = p[i].x, t.y[i] = p[i].y;
+  bool back = false;
+  if (s.cull || s.two_side) {
+    back = back_facing_triangle(glm::dvec4(l.vs.clip[vi[0]]), glm::dvec4(l.vs.clip[vi[1]]), glm::dvec4(l.vs.clip[vi[2]]), s);
+    if (culled(back, s)) return;
+  }
+  bool swapped = false;
+  if (!detail::setup_edges(t, l.fb.width, l.fb.height, &swapped)) return;
+  size_t order[3] = {vi[0], vi[1], vi[2]};
+  if (swapped) std::swap(order[1], order[2]);
+  auto planes = [&] {
+    const bool use_back = back && s.two_side;
+    const ShadedVertex* const v[3] = {&l.vs.hot[order[0]], &l.vs.hot[order[1]], &l.vs.hot[order[2]]};
+    if (!s.flat && !s.add_secondary && !use_back) return smooth_planes(t, v);
+    glm::dvec3 pos[3];
+    double inv_w[3];
+    const glm::vec4* c[3];
+    const glm::vec4* sc[3];
+    for (int i = 0; i < 3; ++i) {
+      pos[i] = {v[i]->x, v[i]->y, v[i]->z};
+      inv_w[i] = 1 / double(v[i]->w);
+      const size_t from = s.flat ? vi[2] : order[i];  // flat: the provoking vertex's colours
+      c[i] = use_back ? &l.vs.back[from] : &l.vs.hot[from].color;
+      sc[i] = !s.add_secondary ? c[i] : use_back ? &l.vs.back_sec[from] : &l.vs.front_sec[from];
+    }
+    return detail::setup_planes(t, pos, inv_w, c, sc, s.flat, s.add_secondary);
+  };
+  detail::rasterize<D>(l.fb, t, s.depth_func, mine, planes);
+}
+
+// Binning: triangles [first, last), in order, each kept for the threads whose bands its box of
+// pixel centres meets (a clipped one for all). At high subdivision most triangles enclose no
+// pixel centre; they are dropped here, once, by whichever thread meets them.
+void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* const* out, size_t* counts) {
   const int fb_w = l.fb.width, fb_h = l.fb.height;
-  const detail::Bands mine(band, bands);
-  for (size_t tri = 0; tri < l.count; ++tri) {
-    const size_t vi[3] = {l.idx ? l.idx[3 * tri] : 3 * tri, l.idx ? l.idx[3 * tri + 1] : 3 * tri + 1,
-                          l.idx ? l.idx[3 * tri + 2] : 3 * tri + 2};
-    if (l.idx && tri + kAhead < l.count)  // indexed vertices are scattered: ask for them early
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t ahead = l.idx[3 * (tri + kAhead) + k];
-        __builtin_prefetch(&l.vs.snapped[ahead]), __builtin_prefetch(&l.vs.hot[ahead]);
-      }
+  for (size_t tri = first; tri < last; ++tri) {
+    if (l.idx && tri + kAhead < last)  // indexed vertices are scattered: ask for them early
+      for (int k = 0; k < 3; ++k) __builtin_prefetch(&l.vs.snapped[l.idx[3 * (tri + kAhead) + k]]);
+    const std::array<size_t, 3> vi = l.corners(tri);
     const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
     if (p[0].x == kNotMapped || p[1].x == kNotMapped || p[2].x == kNotMapped) {
-      draw_clipped(l, vi, mine);
+      for (int o = 0; o < threads; ++o) out[o][counts[o]++] = uint32_t(tri) | kClipped;
       continue;
     }
-    // Rows first: most triangles at high subdivision enclose no pixel centre, or only centres
-    // in another thread's band.
     const int32_t ylo = std::min({p[0].y, p[1].y, p[2].y}), yhi = std::max({p[0].y, p[1].y, p[2].y});
     const int row_lo = std::max(0, (ylo - 128 + 255) >> 8), row_hi = std::min(fb_h - 1, (yhi - 128) >> 8);
     if (row_lo > row_hi) continue;
-    if (row_lo / kBandRows == row_hi / kBandRows && !mine.owns(row_lo / kBandRows)) continue;
     const int32_t xlo = std::min({p[0].x, p[1].x, p[2].x}), xhi = std::max({p[0].x, p[1].x, p[2].x});
     if (std::max(0, (xlo - 128 + 255) >> 8) > std::min(fb_w - 1, (xhi - 128) >> 8)) continue;
-    Triangle t;
-    for (int i = 0; i < 3; ++i) t.x[i] = p[i].x, t.y[i] = p[i].y;
-    bool back = false;
-    if (facing) {
-      back = back_facing_triangle(glm::dvec4(l.vs.clip[vi[0]]), glm::dvec4(l.vs.clip[vi[1]]), glm::dvec4(l.vs.clip[vi[2]]), s);
-      if (culled(back, s)) continue;
+    const int band_lo = row_lo / kBandRows, band_hi = std::min(row_hi / kBandRows, band_lo + threads - 1);
+    for (int b = band_lo; b <= band_hi; ++b) {
+      const int o = b % threads;
+      out[o][counts[o]++] = uint32_t(tri);
     }
-    bool swapped = false;
-    if (!detail::setup_edges(t, fb_w, fb_h, &swapped)) continue;
-    size_t order[3] = {vi[0], vi[1], vi[2]};
-    if (swapped) std::swap(order[1], order[2]);
-    auto planes = [&] {
-      const bool use_back = back && s.two_side;
-      const ShadedVertex* const v[3] = {&l.vs.hot[order[0]], &l.vs.hot[order[1]], &l.vs.hot[order[2]]};
-      if (fast_planes && !use_back) return smooth_planes(t, v);
-      glm::dvec3 pos[3];
-      double inv_w[3];
-      const glm::vec4* c[3];
-      const glm::vec4* sc[3];
-      for (int i = 0; i < 3; ++i) {
-        pos[i] = {v[i]->x, v[i]->y, v[i]->z};
-        inv_w[i] = 1 / double(v[i]->w);
-        const size_t from = s.flat ? vi[2] : order[i];  // flat: the provoking vertex's colours
-        c[i] = use_back ? &l.vs.back[from] : &l.vs.hot[from].color;
-        sc[i] = !s.add_secondary ? c[i] : use_back ? &l.vs.back_sec[from] : &l.vs.front_sec[from];
+  }
+}
+
+// Rasterization: what every binning share kept for this thread, in primitive order.
+template <detail::DepthMode D>
+void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+  for (int share = 0; share < shares; ++share) {
+    const uint32_t* list = in[share];
+    const size_t n = counts[share];
+    for (size_t e = 0; e < n; ++e) {
+      if (e + kAhead < n) {
+        const std::array<size_t, 3> ahead = l.corners(list[e + kAhead] & ~kClipped);
+        for (size_t a : ahead) __builtin_prefetch(&l.vs.snapped[a]), __builtin_prefetch(&l.vs.hot[a]);
       }
-      return detail::setup_planes(t, pos, inv_w, c, sc, s.flat, s.add_secondary);
-    };
-    detail::rasterize<D>(l.fb, t, s.depth_func, mine, planes);
+      const std::array<size_t, 3> vi = l.corners(list[e] & ~kClipped);
+      if (list[e] & kClipped) {
+        draw_clipped(l, vi, mine);
+        continue;
+      }
+      const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
+      draw_one<D>(l, vi, p, mine);
+    }
   }
 }
 
 }  // namespace
 
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
-                        size_t triangles, Workers& workers) {
-  const List l{fb, s, vs, idx, triangles};
-  const int bands = std::max(1, std::min(workers.size(), (fb.height + kBandRows - 1) / kBandRows));
-  auto share = [&](int band) {
-    if (band >= bands) return;
+namespace {
+
+void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
+  const State& s = l.s;
+  const size_t triangles = l.count;
+  const int threads = std::max(1, std::min({workers.size(), kMaxThreads, (l.fb.height + kBandRows - 1) / kBandRows}));
+  // bins.lists[share * threads + owner]: what binning share `share` kept for thread `owner`.
+  bins.lists.resize(size_t(threads * threads));
+  for (int share = 0; share < threads; ++share) {
+    const size_t n = triangles * size_t(share + 1) / size_t(threads) - triangles * size_t(share) / size_t(threads);
+    for (int o = 0; o < threads; ++o) bins.lists[size_t(share * threads + o)].resize(n);
+  }
+  size_t counts[kMaxThreads][kMaxThreads] = {};
+  auto bin = [&](int share) {
+    if (share >= threads) return;
+    uint32_t* out[kMaxThreads];
+    for (int o = 0; o < threads; ++o) out[o] = bins.lists[size_t(share * threads + o)].data();
+    bin_share(l, triangles * size_t(share) / size_t(threads), triangles * size_t(share + 1) / size_t(threads),
+              threads, out, counts[share]);
+  };
+  auto draw = [&](int owner) {
+    if (owner >= threads) return;
+    const detail::Bands mine(owner, threads);
+    const uint32_t* in[kMaxThreads];
+    size_t n[kMaxThreads];
+    for (int share = 0; share < threads; ++share)
+      in[share] = bins.lists[size_t(share * threads + owner)].data(), n[share] = counts[share][owner];
     switch (detail::depth_mode(s)) {
-      case detail::kNoDepth: return draw_share<detail::kNoDepth>(l, band, bands);
-      case detail::kLess: return draw_share<detail::kLess>(l, band, bands);
-      case detail::kLequal: return draw_share<detail::kLequal>(l, band, bands);
-      case detail::kAnyDepth: return draw_share<detail::kAnyDepth>(l, band, bands);
+      case detail::kNoDepth: return draw_bins<detail::kNoDepth>(l, mine, in, n, threads);
+      case detail::kLess: return draw_bins<detail::kLess>(l, mine, in, n, threads);
+      case detail::kLequal: return draw_bins<detail::kLequal>(l, mine, in, n, threads);
+      case detail::kAnyDepth: return draw_bins<detail::kAnyDepth>(l, mine, in, n, threads);
     }
   };
-  if (bands == 1) return share(0);
-  workers.run(share);
+  if (threads == 1) return bin(0), draw(0);
+  workers.run(bin);
+  workers.run(draw);
+}
+
+}  // namespace
+
+void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
+                        size_t triangles, Workers& workers, TriangleBins& bins) {
+  constexpr size_t kPart = size_t(1) << 30;  // binned triangle numbers have 31 bits
+  for (size_t done = 0; done < triangles; done += kPart)
+    draw_part({fb, s, vs, idx ? idx + 3 * done : nullptr, std::min(kPart, triangles - done), idx ? 0 : done}, workers, bins);
 }
 
 }  // namespace ffc::raster

@@ -44,10 +44,18 @@ struct ShadedVertices {
 // colours are the caller's.
 void map_shaded(ShadedVertices& vs, size_t i, const State& s);
 
+// The binned triangles of a draw, kept between draws so that steady state allocates nothing.
+struct TriangleBins {
+  std::vector<std::vector<uint32_t>> lists;
+};
+
 // Draws triangle t from vertices (idx[3t], idx[3t+1], idx[3t+2]), or (3t, 3t+1, 3t+2) when idx is
-// null; the third is the provoking vertex. Triangles that need clipping take clip_and_map. Not
+// null; the third is the provoking vertex. In two passes over the threads: binning (each thread
+// takes a contiguous share of the triangles, drops those that enclose no pixel centre and keeps
+// the others for the threads whose bands they meet), then drawing (each thread sets up and draws
+// what was kept for it, in primitive order). Triangles that need clipping take clip_and_map. Not
 // for feedback, and s.float_window must be set.
 void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
-                        size_t triangles, Workers& workers);
+                        size_t triangles, Workers& workers, TriangleBins& bins);
 
 }  // namespace ffc::raster

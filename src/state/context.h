@@ -212,6 +212,7 @@ class Context {
   int threads_ = 2;
   std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
   raster::ShadedVertices shaded_;  // the triangle-list path's vertices
+  raster::TriangleBins bins_;
 
   // Feedback
   GLenum render_mode_ = GL_RENDER;

@@ -137,7 +137,7 @@ void Context::shade_range(GLint first, GLint count) {
 }
 
 void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
-  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers());
+  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers(), bins_);
 }
 
 }  // namespace ffc::state
