@@ -2,6 +2,8 @@
 // these beside the double matrices so that its window positions round exactly as llvmpipe's: a
 // vertex a 1/10000 pixel from an edge then lands on the same side, and coverage matches.
 #pragma once
+#include <xmmintrin.h>
+
 #include <cmath>
 #include <glm/glm.hpp>
 
@@ -17,10 +19,15 @@ inline glm::mat4 mul(const glm::mat4& a, const glm::mat4& b) {
 }
 
 // m * v, summed left to right as the fixed-function vertex program's dot products.
+// The four rows at once in SSE, each summed in the same order.
 inline glm::vec4 transform(const glm::mat4& m, const glm::vec4& v) {
-  glm::vec4 r;
-  for (int i = 0; i < 4; ++i) r[i] = m[0][i] * v.x + m[1][i] * v.y + m[2][i] * v.z + m[3][i] * v.w;
-  return r;
+  const __m128 r = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&m[0][0]), _mm_set1_ps(v.x)),
+                                                    _mm_mul_ps(_mm_loadu_ps(&m[1][0]), _mm_set1_ps(v.y))),
+                                         _mm_mul_ps(_mm_loadu_ps(&m[2][0]), _mm_set1_ps(v.z))),
+                              _mm_mul_ps(_mm_loadu_ps(&m[3][0]), _mm_set1_ps(v.w)));
+  glm::vec4 out;
+  _mm_storeu_ps(&out[0], r);
+  return out;
 }
 
 // glRotatef: axis-aligned rotations are built directly, others from the normalized axis; an axis

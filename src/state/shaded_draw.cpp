@@ -18,13 +18,15 @@ constexpr GLint kParallelShading = 2048;  // below this one thread lights them a
 // Components [0, n) of element i, the others from `v`; float arrays read directly.
 inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
   const uint8_t* p = element(a, i);
-  if (a.type == GL_FLOAT) {
-    for (int k = 0; k < n; ++k) {
-      float f;
-      std::memcpy(&f, p + 4 * k, 4);
-      v[k] = f;
+  if (a.type == GL_FLOAT) {  // fixed-size copies: no indexing of a vector by a run-time number
+    float f[4] = {float(v.x), float(v.y), float(v.z), float(v.w)};  // the defaults are 0 and 1
+    switch (n) {
+      case 4: std::memcpy(f, p, 16); break;
+      case 3: std::memcpy(f, p, 12); break;
+      case 2: std::memcpy(f, p, 8); break;
+      default: std::memcpy(f, p, 4); break;
     }
-    return v;
+    return glm::dvec4(f[0], f[1], f[2], f[3]);
   }
   for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
   return v;
