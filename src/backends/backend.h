@@ -16,8 +16,17 @@ class Backend {
   // Makes a width x height framebuffer current, in GL's default state, and loads the dispatch.
   // Throws std::runtime_error if the context cannot be made.
   virtual void begin(int width, int height) = 0;
-  // Finishes drawing and reads the colour buffer back, top row first.
-  virtual image::Image read() = 0;
+  // Makes this backend's framebuffer current again, with its state and contents, after another
+  // backend's: `ffcompat bench` alternates frames between backends.
+  virtual void resume() = 0;
+  // Finishes drawing and reads the colour buffer back, top row first, into `out` (whose memory
+  // is reused when the size has not changed).
+  virtual void read_into(image::Image& out) = 0;
+  image::Image read() {
+    image::Image img;
+    read_into(img);
+    return img;
+  }
 };
 
 // "mesa" (Mesa's fixed-function pipeline, offscreen), "soft" (ours, float) or "soft-double" (ours,

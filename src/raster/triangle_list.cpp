@@ -157,15 +157,17 @@ void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)
 // Binning: triangles [first, last), in order, each kept for the threads whose bands its box of
 // pixel centres meets (a clipped one for all). At high subdivision most triangles enclose no
 // pixel centre; they are dropped here, once, by whichever thread meets them.
-void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* const* out, size_t* counts) {
+void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* const* lists, size_t* counts) {
   const int fb_w = l.fb.width, fb_h = l.fb.height;
+  uint32_t* out[kMaxThreads];  // write pointers, kept in registers rather than counts in memory
+  for (int o = 0; o < threads; ++o) out[o] = lists[o];
   for (size_t tri = first; tri < last; ++tri) {
     if (l.idx && tri + kAhead < last)  // indexed vertices are scattered: ask for them early
       for (int k = 0; k < 3; ++k) __builtin_prefetch(&l.vs.snapped[l.idx[3 * (tri + kAhead) + k]]);
     const std::array<size_t, 3> vi = l.corners(tri);
     const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
     if (p[0].x == kNotMapped || p[1].x == kNotMapped || p[2].x == kNotMapped) {
-      for (int o = 0; o < threads; ++o) out[o][counts[o]++] = uint32_t(tri) | kClipped;
+      for (int o = 0; o < threads; ++o) *out[o]++ = uint32_t(tri) | kClipped;
       continue;
     }
     const int32_t ylo = std::min({p[0].y, p[1].y, p[2].y}), yhi = std::max({p[0].y, p[1].y, p[2].y});
@@ -175,10 +177,10 @@ void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* 
     if (std::max(0, (xlo - 128 + 255) >> 8) > std::min(fb_w - 1, (xhi - 128) >> 8)) continue;
     const int band_lo = row_lo / kBandRows, band_hi = std::min(row_hi / kBandRows, band_lo + threads - 1);
     for (int b = band_lo; b <= band_hi; ++b) {
-      const int o = b % threads;
-      out[o][counts[o]++] = uint32_t(tri);
+      *out[b % threads]++ = uint32_t(tri);
     }
   }
+  for (int o = 0; o < threads; ++o) counts[o] = size_t(out[o] - lists[o]);
 }
 
 // Rasterization: what every binning share kept for this thread, in primitive order.

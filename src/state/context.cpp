@@ -939,7 +939,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   if (type == GL_UNSIGNED_INT && count > 0 && shaded_path(mode)) {
     // The triangle-list path reads 32-bit indices in place when they start at 0.
     const auto* u = static_cast<const uint32_t*>(indices);
-    for (GLsizei i = 0; i < count; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
+    index_range(u, size_t(count), lo, hi);
     if (lo == 0) {
       shade_range(0, GLint(hi) + 1);
       return draw_shaded(u, size_t(count) / 3);

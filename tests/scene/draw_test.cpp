@@ -215,7 +215,8 @@ class CountingBackend : public backends::Backend {
   int begins = 0;
   std::string name() const override { return "counting"; }
   void begin(int w, int h) override { ++begins, mesa->begin(w, h); }
-  image::Image read() override { return mesa->read(); }
+  void resume() override { mesa->resume(); }
+  void read_into(image::Image& out) override { mesa->read_into(out); }
 };
 
 TEST(DrawOrder, MeshesAreBuiltBeforeTheFirstGlCall) {

@@ -43,13 +43,20 @@ void MesaBackend::begin(int width, int height) {
   glViewport(0, 0, width, height);
 }
 
-image::Image MesaBackend::read() {
+void MesaBackend::resume() {
+  if (!context_) throw std::logic_error("mesa: resume() before begin()");
+  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(), GL_UNSIGNED_BYTE, width_, height_))
+    throw std::runtime_error("mesa: OSMesaMakeCurrent failed");
+  gl::load(osmesa_loader);
+}
+
+void MesaBackend::read_into(image::Image& img) {
   glFinish();
-  image::Image img(width_, height_);
+  img.width = width_, img.height = height_;
+  img.rgba.resize(size_t(width_) * height_ * 4);
   const size_t row = size_t(width_) * 4;
   for (int y = 0; y < height_; ++y)  // OSMesa's rows are bottom-up
     std::memcpy(&img.rgba[size_t(y) * row], &buffer_[size_t(height_ - 1 - y) * row], row);
-  return img;
 }
 
 }  // namespace ffc::backends

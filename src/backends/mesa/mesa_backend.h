@@ -18,7 +18,8 @@ class MesaBackend final : public Backend {
 
   std::string name() const override { return "mesa"; }
   void begin(int width, int height) override;
-  image::Image read() override;
+  void resume() override;
+  void read_into(image::Image& out) override;
 
  private:
   void* context_ = nullptr;  // OSMesaContext

@@ -17,6 +17,11 @@ void SoftBackend::begin(int width, int height) {
     throw std::runtime_error("soft: framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
                              " is outside 1..16384");
   context_ = std::make_unique<state::Context>(width, height, precision_);
+  resume();
+}
+
+void SoftBackend::resume() {
+  if (!context_) throw std::logic_error("soft: resume() before begin()");
   state::Context::make_current(context_.get());
   // glRasterPos/glDrawPixels only put a finished picture on a window; this context has no window,
   // so they stay unresolved (null) here.
@@ -25,13 +30,13 @@ void SoftBackend::begin(int width, int height) {
       throw std::runtime_error("soft: no entry point for " + name);
 }
 
-image::Image SoftBackend::read() {
+void SoftBackend::read_into(image::Image& img) {
   const raster::Framebuffer& fb = context_->framebuffer();
-  image::Image img(fb.width, fb.height);
+  img.width = fb.width, img.height = fb.height;
+  img.rgba.resize(fb.color.size());
   const size_t row = size_t(fb.width) * 4;
   for (int y = 0; y < fb.height; ++y)  // GL's row 0 is the bottom one
     std::memcpy(&img.rgba[size_t(y) * row], &fb.color[size_t(fb.height - 1 - y) * row], row);
-  return img;
 }
 
 }  // namespace ffc::backends

@@ -14,7 +14,8 @@ class SoftBackend final : public Backend {
   ~SoftBackend() override;
   std::string name() const override { return precision_ == state::Precision::Float ? "soft" : "soft-double"; }
   void begin(int width, int height) override;
-  image::Image read() override;
+  void resume() override;
+  void read_into(image::Image& out) override;
 
  private:
   state::Precision precision_;
