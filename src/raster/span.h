@@ -44,6 +44,13 @@ inline bool depth_pass(GLenum func, uint32_t z, uint32_t stored) {
   }
 }
 
+// A depth in [0, 1] (clamped; NaN to 0) as a 24-bit value, without branches: maxsd gives its
+// second operand, 0, when the first is NaN.
+inline uint32_t depth24(double z) {
+  const __m128d c = _mm_min_sd(_mm_max_sd(_mm_set_sd(z), _mm_setzero_pd()), _mm_set_sd(1.0));
+  return uint32_t(_mm_cvttsd_si32(_mm_add_sd(_mm_mul_sd(c, _mm_set_sd(double(0xFFFFFF))), _mm_set_sd(0.5))));
+}
+
 // Solves value = p0 + p1 x + p2 y through three points once per triangle; each attribute is then
 // a few multiplications.
 struct PlaneSolver {
@@ -167,7 +174,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
     for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
       bool pass = true;
       if constexpr (D != kNoDepth) {
-        const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
+        const uint32_t zi = depth24(z);
         if constexpr (D == kLess) pass = zi < *zp;
         else if constexpr (D == kLequal) pass = zi <= *zp;
         else pass = depth_pass(depth_func, zi, *zp);
