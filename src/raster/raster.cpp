@@ -1,5 +1,6 @@
 #include "raster/raster.h"
 #include "raster/span.h"
+#include "raster/workers.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +8,6 @@
 #include <cstring>
 #include <emmintrin.h>
 #include <xmmintrin.h>
-#include <thread>
 
 namespace ffc::raster {
 
@@ -205,10 +205,12 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
 }
 
 void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
-                    int threads) {
+                    Workers& workers) {
   size_t total = 0;
   for (const auto* l : lists) total += l->size();
-  auto work = [&](int band, int bands) {
+  const int bands = std::max(1, std::min(total < 64 ? 1 : workers.size(), (fb.height + kBandRows - 1) / kBandRows));
+  auto work = [&](int band) {
+    if (band >= bands) return;
     const detail::Bands mine(band, bands);
     for (const auto* l : lists)
       for (const Triangle& t : *l) {
@@ -220,12 +222,8 @@ void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangl
         if (c.xmin <= c.xmax && c.ymin <= c.ymax) detail::rasterize(fb, c, s, mine, [] { return true; });
       }
   };
-  threads = std::max(1, std::min(threads, (fb.height + kBandRows - 1) / kBandRows));
-  if (threads == 1 || total < 64) return work(0, 1);
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t, threads);
-  work(0, threads);
-  for (auto& th : pool) th.join();
+  if (bands == 1) return work(0);
+  workers.run(work);
 }
 
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s) {

@@ -110,13 +110,11 @@ struct SetupVertex {
 };
 bool setup(const std::array<SetupVertex, 3>& v, const State& s, Triangle& out);
 
-// Rasterizes in order, rows shared out between `threads` threads in interleaved bands: every pixel
-// is written by one thread, in primitive order, so the picture does not depend on the count.
+// Rasterizes in order, rows shared out between the workers in interleaved bands: every pixel is
+// written by one thread, in primitive order, so the picture does not depend on their number.
+class Workers;
 void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
-                    int threads);  // the lists one after the other
-inline void draw_triangles(Framebuffer& fb, const std::vector<Triangle>& tris, const State& s, int threads) {
-  draw_triangles(fb, std::vector<const std::vector<Triangle>*>{&tris}, s, threads);
-}
+                    Workers& workers);  // the lists one after the other
 
 void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);

@@ -10,7 +10,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <functional>
-#include <thread>
 
 namespace ffc::state {
 
@@ -800,12 +799,14 @@ void Context::fetch_range(GLint first, GLint count) {
       verts_[size_t(i - first)] = vertex(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)), n, c, zero);
     }
   };
-  bool zero[2] = {false, false};
-  const GLint mid = first + count / 2;
-  std::thread other(work, mid, first + count, &zero[1]);
-  work(first, mid, &zero[0]);
-  other.join();
-  if (zero[0] || zero[1]) deviations_.insert(kZeroNormal);
+  raster::Workers& w = workers();
+  std::vector<char> zero(size_t(w.size()), 0);  // per share: a zero normal met (char: no vector<bool> bits)
+  w.run([&](int share) {
+    bool z = false;
+    work(first + GLint(int64_t(count) * share / w.size()), first + GLint(int64_t(count) * (share + 1) / w.size()), &z);
+    zero[size_t(share)] = z;
+  });
+  if (std::find(zero.begin(), zero.end(), 1) != zero.end()) deviations_.insert(kZeroNormal);
   const GLint last = first + count - 1;
   if (normal_array_.enabled) {
     const glm::dvec4 n = attribute(normal_array_, last, 3, true, glm::dvec4(0));
@@ -1100,22 +1101,20 @@ void Context::flush_primitive() {
       if (!feedback && threads_ > 1 && n >= 3 * 4096) {
         // Assembly and setup split in contiguous ranges, one per thread; the rasterizer takes
         // the ranges in order, so the picture is the same as from one thread.
-        const size_t count = n / 3, parts = size_t(threads_);
+        raster::Workers& w = workers();
+        const size_t count = n / 3, parts = size_t(w.size());
         tri_parts_.resize(parts - 1);
-        std::vector<std::thread> pool;
-        for (size_t p = 1; p < parts; ++p)
-          pool.emplace_back([&, p] {
-            Scratch local;
-            std::vector<raster::Triangle>& out = tri_parts_[p - 1];
-            out.clear();
-            for (size_t t = count * p / parts; t < count * (p + 1) / parts; ++t)
-              emit_triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, out, local);
-          });
-        for (size_t t = 0; t < count / parts; ++t) emit_triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, tris, scratch);
-        for (auto& th : pool) th.join();
+        w.run([&](int share) {
+          const size_t p = size_t(share);
+          Scratch local;
+          std::vector<raster::Triangle>& out = p == 0 ? tris : tri_parts_[p - 1];
+          if (p > 0) out.clear();
+          for (size_t t = count * p / parts; t < count * (p + 1) / parts; ++t)
+            emit_triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, out, p == 0 ? scratch : local);
+        });
         std::vector<const std::vector<raster::Triangle>*> lists = {&tris};
         for (const auto& part : tri_parts_) lists.push_back(&part);
-        raster::draw_triangles(fb_, lists, rs, threads_);
+        raster::draw_triangles(fb_, lists, rs, w);
         verts_.clear();
         return;
       }
@@ -1145,7 +1144,7 @@ void Context::flush_primitive() {
       for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
       break;
   }
-  if (!tris.empty()) raster::draw_triangles(fb_, tris, rs, threads_);
+  if (!tris.empty()) raster::draw_triangles(fb_, {&tris}, rs, workers());
   verts_.clear();
 }
 

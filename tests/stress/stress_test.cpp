@@ -13,6 +13,7 @@
 #include "mesh/icosphere.h"
 #include "mesh/mesh.h"
 #include "raster/raster.h"
+#include "raster/workers.h"
 #include "stress/stress.h"
 
 namespace ffc {
@@ -243,7 +244,9 @@ TEST(Harness, TheRasterCountsFragmentsFromNonFiniteColours) {
   ASSERT_TRUE(raster::setup(a, b, c, s, t));
   t.c0[1] = std::numeric_limits<float>::quiet_NaN();
   raster::reset_nonfinite_fragments();
-  raster::draw_triangles(fb, std::vector<raster::Triangle>{t}, s, 1);
+  const std::vector<raster::Triangle> one = {t};
+  raster::Workers workers(1);
+  raster::draw_triangles(fb, {&one}, s, workers);
   EXPECT_GT(raster::nonfinite_fragments(), 20u);
 
   raster::reset_nonfinite_fragments();
