@@ -32,6 +32,10 @@ uint8_t to_unorm8(double c) {
 
 namespace {
 
+const Vertex& flat_source(const Vertex& v, const State& s, const Vertex* provoking) {
+  return s.flat && provoking ? *provoking : v;
+}
+
 struct ClipVertex {
   glm::dvec4 clip;
   glm::dvec4 c[4];  // front, back, front_sec, back_sec
@@ -44,13 +48,16 @@ ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   return r;
 }
 
-// Sutherland-Hodgman against -w <= x,y,z <= w, in homogeneous coordinates.
-std::vector<ClipVertex> clip(std::vector<ClipVertex> poly, bool is_line) {
+using ClipPolygon = Fixed<ClipVertex, 10>;
+
+// Sutherland-Hodgman against -w <= x,y,z <= w, in homogeneous coordinates: each plane adds at most
+// one vertex, so a triangle stays within nine.
+ClipPolygon clip(ClipPolygon poly, bool is_line) {
   for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
     const int axis = plane / 2;
     const double sign = plane % 2 ? -1 : 1;
     auto dist = [&](const ClipVertex& v) { return v.clip.w + sign * v.clip[axis]; };
-    std::vector<ClipVertex> out;
+    ClipPolygon out;
     const size_t n = poly.size();
     const size_t edges = is_line ? 1 : n;
     if (is_line) {
@@ -68,7 +75,7 @@ std::vector<ClipVertex> clip(std::vector<ClipVertex> poly, bool is_line) {
       if (da >= 0) out.push_back(a);
       if ((da >= 0) != (db >= 0)) out.push_back(lerp(a, b, da / (da - db)));
     }
-    poly = std::move(out);
+    poly = out;
   }
   return poly;
 }
@@ -127,31 +134,30 @@ bool culled(bool back, const State& s) {
   return s.cull && (s.cull_mode == GL_FRONT_AND_BACK || (s.cull_mode == GL_BACK) == back);
 }
 
-std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const State& s, const Vertex* provoking,
-                                      bool is_line, bool* back_facing) {
+WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,
+                           bool* back_facing) {
   // A NaN or infinite clip coordinate (unspecified input, GL 2.1 section 2.1.1) has no place in the
   // window: the primitive is dropped, so nothing non-finite reaches setup or feedback.
-  for (const Vertex& v : prim)
-    if (!(std::isfinite(v.clip.x) && std::isfinite(v.clip.y) && std::isfinite(v.clip.z) && std::isfinite(v.clip.w)))
-      return {};
-  std::vector<ClipVertex> cv;
-  cv.reserve(prim.size());
-  for (const Vertex& v : prim) cv.push_back({v.clip, {v.front, v.back, v.front_sec, v.back_sec}});
-  if (s.flat && provoking)  // flat shading: every vertex carries the provoking vertex's colours
-    for (ClipVertex& v : cv)
-      v.c[0] = provoking->front, v.c[1] = provoking->back, v.c[2] = provoking->front_sec, v.c[3] = provoking->back_sec;
+  for (size_t i = 0; i < count; ++i) {
+    const glm::dvec4& c = prim[i].clip;
+    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) return {};
+  }
+  ClipPolygon cv;
+  for (size_t i = 0; i < count; ++i) {
+    const Vertex& v = flat_source(prim[i], s, provoking);  // flat: every vertex carries the provoking one's colours
+    cv.push_back({prim[i].clip, {v.front, v.back, v.front_sec, v.back_sec}});
+  }
   // Facing is decided before clipping, from the whole primitive, in window orientation.
   bool back = false;
-  if (!is_line && prim.size() >= 3) {
+  if (!is_line && count >= 3) {
     back = back_facing_triangle(prim[0].clip, prim[1].clip, prim[2].clip, s);
     if (culled(back, s)) return {};
   }
   if (back_facing) *back_facing = back;
-  const std::vector<ClipVertex> clipped = clip(std::move(cv), is_line);
-  std::vector<WindowVertex> out;
-  out.reserve(clipped.size());
+  const ClipPolygon clipped = clip(cv, is_line);
   for (const ClipVertex& v : clipped)  // e.g. w ~ 1e-40: 1/w is no float, nor are the positions
     if (!w_mappable(v.clip.w)) return {};
+  WindowPolygon out;
   for (const ClipVertex& v : clipped) {
     WindowVertex w = map_to_window(v.clip, s);
     const bool use_back = back && s.two_side;
@@ -226,13 +232,11 @@ void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangl
   workers.run(work);
 }
 
-void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s) {
+void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s) {
   // llvmpipe draws a line as a parallelogram one pixel wide across its major axis, rasterized with
   // the triangle rules (left and bottom edges inclusive). Along the major axis a pixel belongs to
   // the line when its centre lies in [start, end): the diamond-exit rule, for thin lines.
   // Across it, a centre c is inside when c is in [p - 0.5, p + 0.5), that is pixel ceil(p) - 1.
-  if (line.size() != 2) return;
-  const WindowVertex &a = line[0], &b = line[1];
   const double dx = b.pos.x - a.pos.x, dy = b.pos.y - a.pos.y;
   const bool x_major = std::abs(dx) >= std::abs(dy);
   const double a_major = x_major ? a.pos.x : a.pos.y, b_major = x_major ? b.pos.x : b.pos.y;

@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 
 #include <array>
+#include <initializer_list>
 #include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -46,6 +47,31 @@ struct State {
   int fb_height = 0;
 };
 
+// A vector of at most N elements kept in place: clipping makes at most nine vertices of a
+// triangle, and the pipeline allocates nothing per primitive.
+template <typename T, size_t N>
+class Fixed {
+ public:
+  Fixed() = default;
+  Fixed(std::initializer_list<T> l) {
+    for (const T& v : l) push_back(v);
+  }
+  void push_back(const T& v) { data_[n_++] = v; }  // the callers stay within N
+  void clear() { n_ = 0; }
+  size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  T& operator[](size_t i) { return data_[i]; }
+  const T& operator[](size_t i) const { return data_[i]; }
+  const T* begin() const { return data_.data(); }
+  const T* end() const { return data_.data() + n_; }
+  T* begin() { return data_.data(); }
+  T* end() { return data_.data() + n_; }
+
+ private:
+  std::array<T, N> data_{};
+  size_t n_ = 0;
+};
+
 // A clipped primitive in window coordinates, as feedback reports it.
 struct WindowVertex {
   glm::dvec3 pos;    // x, y, z in window coordinates
@@ -84,8 +110,9 @@ bool culled(bool back_facing, const State& s);
 // window. Returns the clipped polygon with colours chosen by facing; empty when culled or clipped
 // away. `provoking` is the vertex whose colours a flat primitive takes (it may be outside `prim`:
 // a quad split in two keeps its 4th vertex); null keeps every vertex's own colours (feedback).
-std::vector<WindowVertex> clip_and_map(const std::vector<Vertex>& prim, const State& s, const Vertex* provoking,
-                                      bool is_line, bool* back_facing = nullptr);
+using WindowPolygon = Fixed<WindowVertex, 10>;
+WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,
+                           bool* back_facing = nullptr);
 
 // A triangle set up for rasterization: edges snapped to 1/256 pixel (llvmpipe's 8 subpixel bits),
 // attribute planes from the unsnapped positions, as llvmpipe builds them.
@@ -116,7 +143,7 @@ class Workers;
 void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
                     Workers& workers);  // the lists one after the other
 
-void draw_line(Framebuffer& fb, const std::vector<WindowVertex>& line, const State& s);
+void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);
 
 // Fragments written from a non-finite colour (a NaN or an infinity in any channel before the

@@ -59,8 +59,8 @@ void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const detail::
     r.back_sec = sec && two_side ? glm::dvec4(l.vs.back_sec[i]) : r.front_sec;
     return r;
   };
-  const std::vector<Vertex> prim = {full(vi[0]), full(vi[1]), full(vi[2])};
-  const std::vector<WindowVertex> w = clip_and_map(prim, l.s, &prim[2], false);
+  const Vertex prim[3] = {full(vi[0]), full(vi[1]), full(vi[2])};
+  const WindowPolygon w = clip_and_map(prim, 3, l.s, &prim[2], false);
   for (size_t k = 1; k + 1 < w.size(); ++k) {
     Triangle t;
     if (!setup(w[0], w[k], w[k + 1], l.s, t)) continue;

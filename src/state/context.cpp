@@ -9,7 +9,6 @@
 #include <limits>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <functional>
 
 namespace ffc::state {
 
@@ -987,31 +986,30 @@ void Context::flush_primitive() {
     else feedback_overflow_ = true;
     ++feedback_count_;
   };
-  std::function<void(GLenum, const std::vector<raster::WindowVertex>&)> emit_feedback;
-  emit_feedback = [&](GLenum kind, const std::vector<raster::WindowVertex>& w) {
-    if (kind == GL_POLYGON_TOKEN && w.size() > 3) {
-      // A clipped triangle goes back as Mesa's clipper emits it: a fan of triangles
-      // (v[i], v[i+1], v[0]), the first vertex last.
-      for (size_t i = 1; i + 1 < w.size(); ++i) emit_feedback(kind, {w[i], w[i + 1], w[0]});
-      return;
-    }
-    const size_t n = kind == GL_POINT_TOKEN ? 1 : w.size();
-    put(kind);
-    if (kind == GL_POLYGON_TOKEN) put(double(n));
-    for (size_t i = 0; i < n; ++i) {
-      const raster::WindowVertex& v = w[i];
-      put(v.pos.x), put(v.pos.y);
-      if (feedback_type_ != GL_2D) put(v.pos.z);
-      if (feedback_type_ == GL_4D_COLOR_TEXTURE) put(1 / v.inv_w);
-      if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE ||
-          feedback_type_ == GL_4D_COLOR_TEXTURE)
-        for (int k = 0; k < 4; ++k) put(v.color[k]);
-      if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
-        put(0), put(0), put(0), put(1);
-    }
+  // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it:
+  // a fan of triangles (v[i], v[i+1], v[0]), the first vertex last.
+  auto emit_feedback = [&](GLenum kind, const raster::WindowVertex* w, size_t count) {
+    auto one = [&](std::initializer_list<const raster::WindowVertex*> vs) {
+      put(kind);
+      if (kind == GL_POLYGON_TOKEN) put(double(vs.size()));
+      for (const raster::WindowVertex* v : vs) {
+        put(v->pos.x), put(v->pos.y);
+        if (feedback_type_ != GL_2D) put(v->pos.z);
+        if (feedback_type_ == GL_4D_COLOR_TEXTURE) put(1 / v->inv_w);
+        if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE ||
+            feedback_type_ == GL_4D_COLOR_TEXTURE)
+          for (int k = 0; k < 4; ++k) put(v->color[k]);
+        if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
+          put(0), put(0), put(0), put(1);
+      }
+    };
+    if (kind == GL_POINT_TOKEN) return one({&w[0]});
+    if (kind != GL_POLYGON_TOKEN) return one({&w[0], &w[1]});
+    if (count == 3) return one({&w[0], &w[1], &w[2]});
+    for (size_t i = 1; i + 1 < count; ++i) one({&w[i], &w[i + 1], &w[0]});
   };
 
-  std::vector<raster::Vertex> prim;
+  raster::Fixed<raster::Vertex, 2> prim;
   auto index = [&](size_t i) { return elements_.empty() ? i : size_t(elements_[i]); };
   auto at = [&](size_t i) -> const raster::Vertex& { return verts_[index(i)]; };
   // Most triangles lie inside the view volume: their vertices map to the window once, however
@@ -1027,8 +1025,8 @@ void Context::flush_primitive() {
   // clipped. Safe to run on several threads at once when not in feedback mode (only `out` and
   // `scratch` are written).
   struct Scratch {
-    std::vector<raster::WindowVertex> inside = std::vector<raster::WindowVertex>(3);
-    std::vector<raster::Vertex> prim;
+    raster::WindowVertex inside[3];
+    raster::Vertex prim[3];
   };
   auto emit_triangle = [&](size_t i0, size_t i1, size_t i2, size_t provoking, std::vector<raster::Triangle>& out,
                            Scratch& scratch) {
@@ -1038,13 +1036,13 @@ void Context::flush_primitive() {
       if (raster::culled(back, rs)) return;
       const bool use_back = back && rs.two_side;
       if (feedback) {  // each vertex's own colour
-        std::vector<raster::WindowVertex>& in = scratch.inside;
+        raster::WindowVertex* in = scratch.inside;
         for (int k = 0; k < 3; ++k) {
           in[k] = window_[v[k]];
           in[k].color = use_back ? verts_[v[k]].back : verts_[v[k]].front;
           in[k].sec = use_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
         }
-        return emit_feedback(GL_POLYGON_TOKEN, in);
+        return emit_feedback(GL_POLYGON_TOKEN, in, 3);
       }
       std::array<raster::SetupVertex, 3> sv;
       for (int k = 0; k < 3; ++k) {
@@ -1055,10 +1053,10 @@ void Context::flush_primitive() {
       if (raster::setup(sv, rs, t)) out.push_back(t);
       return;
     }
-    scratch.prim.assign({verts_[v[0]], verts_[v[1]], verts_[v[2]]});
-    const auto w = raster::clip_and_map(scratch.prim, rs, feedback ? nullptr : &at(provoking), false);
+    for (int k = 0; k < 3; ++k) scratch.prim[k] = verts_[v[k]];
+    const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs, feedback ? nullptr : &at(provoking), false);
     if (w.empty()) return;
-    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w);
+    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w.begin(), w.size());
     raster::Triangle t;
     for (size_t k = 1; k + 1 < w.size(); ++k)
       if (raster::setup(w[0], w[k], w[k + 1], rs, t)) out.push_back(t);
@@ -1072,15 +1070,15 @@ void Context::flush_primitive() {
     const bool is_point = kind == GL_POINT_TOKEN;
     if (is_point) prim.push_back(prim[0]);  // a point clips like a degenerate line
     // Feedback reports each vertex's own colour (Mesa does not flatten there).
-    const auto w = raster::clip_and_map(prim, rs, feedback ? nullptr : &at(provoking), true);
+    const raster::WindowPolygon w = raster::clip_and_map(prim.begin(), 2, rs, feedback ? nullptr : &at(provoking), true);
     if (w.empty()) return;
-    if (feedback) return emit_feedback(kind, w);
+    if (feedback) return emit_feedback(kind, w.begin(), w.size());
     if (is_point) {
-      std::vector<raster::WindowVertex> pt = {w[0], w[0]};
-      pt[1].pos.x += 1;
-      raster::draw_line(fb_, pt, rs);
+      raster::WindowVertex right = w[0];
+      right.pos.x += 1;
+      raster::draw_line(fb_, w[0], right, rs);
     } else {
-      raster::draw_line(fb_, w, rs);
+      raster::draw_line(fb_, w[0], w[1], rs);
     }
   };
 

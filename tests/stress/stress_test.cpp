@@ -251,7 +251,7 @@ TEST(Harness, TheRasterCountsFragmentsFromNonFiniteColours) {
 
   raster::reset_nonfinite_fragments();
   a.color.g = std::numeric_limits<double>::infinity();
-  raster::draw_line(fb, {a, b}, s);
+  raster::draw_line(fb, a, b, s);
   EXPECT_GT(raster::nonfinite_fragments(), 5u);
 
   // setup refuses planes that are not finite (here a colour of 1e39: beyond float).
