@@ -41,6 +41,8 @@ nlohmann::json to_json(const scene::Spec& s);
 nlohmann::json to_json(const scene::Description& d);
 nlohmann::json to_json(const image::Diff& d);
 void print_json(const nlohmann::json& j);
+// C++ heap allocations made so far by this process (alloc_count.cpp).
+uint64_t allocations();
 
 void add_render(CLI::App& app);
 void add_normals(CLI::App& app);

@@ -210,16 +210,16 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
   return detail::setup_planes(t, pos, inv_w, color, sec, s.flat, s.add_secondary);
 }
 
-void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
+void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
                     Workers& workers) {
   size_t total = 0;
-  for (const auto* l : lists) total += l->size();
+  for (size_t i = 0; i < count; ++i) total += lists[i]->size();
   const int bands = std::max(1, std::min(total < 64 ? 1 : workers.size(), (fb.height + kBandRows - 1) / kBandRows));
   auto work = [&](int band) {
     if (band >= bands) return;
     const detail::Bands mine(band, bands);
-    for (const auto* l : lists)
-      for (const Triangle& t : *l) {
+    for (size_t i = 0; i < count; ++i)
+      for (const Triangle& t : *lists[i]) {
         // Most triangles fall in one band: skip the others' without touching more of them.
         if (t.ymin / kBandRows == t.ymax / kBandRows && !mine.owns(std::clamp(t.ymin / kBandRows, 0, detail::Bands::kMax))) continue;
         Triangle c = t;  // clip the box to the framebuffer

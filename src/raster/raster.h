@@ -140,8 +140,8 @@ bool setup(const std::array<SetupVertex, 3>& v, const State& s, Triangle& out);
 // Rasterizes in order, rows shared out between the workers in interleaved bands: every pixel is
 // written by one thread, in primitive order, so the picture does not depend on their number.
 class Workers;
-void draw_triangles(Framebuffer& fb, const std::vector<const std::vector<Triangle>*>& lists, const State& s,
-                    Workers& workers);  // the lists one after the other
+void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
+                    Workers& workers);  // the `count` lists one after the other
 
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
 void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);

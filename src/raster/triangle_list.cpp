@@ -43,7 +43,7 @@ struct List {
 };
 
 constexpr uint32_t kClipped = 1u << 31;  // a binned triangle that needs clipping
-constexpr int kMaxThreads = 64;
+constexpr int kMaxThreads = Workers::kMax;
 constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
 
 // A triangle with a vertex outside the view volume: clipped, fanned and set up as the general

@@ -2,10 +2,12 @@
 
 #include <emmintrin.h>
 
+#include <algorithm>
+
 namespace ffc::raster {
 
 Workers::Workers(int threads) {
-  for (int i = 1; i < threads; ++i) threads_.emplace_back([this, i] { loop(i); });
+  for (int i = 1; i < std::min(threads, kMax); ++i) threads_.emplace_back([this, i] { loop(i); });
 }
 
 Workers::~Workers() {

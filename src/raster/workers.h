@@ -13,7 +13,8 @@ namespace ffc::raster {
 
 class Workers {
  public:
-  explicit Workers(int threads);  // threads - 1 are started; the caller is share 0
+  static constexpr int kMax = 64;
+  explicit Workers(int threads);  // min(threads, kMax) - 1 are started; the caller is share 0
   ~Workers();
   Workers(const Workers&) = delete;
   Workers& operator=(const Workers&) = delete;

@@ -799,13 +799,13 @@ void Context::fetch_range(GLint first, GLint count) {
     }
   };
   raster::Workers& w = workers();
-  std::vector<char> zero(size_t(w.size()), 0);  // per share: a zero normal met (char: no vector<bool> bits)
+  bool zero[raster::Workers::kMax] = {};  // per share: a zero normal met
   w.run([&](int share) {
     bool z = false;
     work(first + GLint(int64_t(count) * share / w.size()), first + GLint(int64_t(count) * (share + 1) / w.size()), &z);
-    zero[size_t(share)] = z;
+    zero[share] = z;
   });
-  if (std::find(zero.begin(), zero.end(), 1) != zero.end()) deviations_.insert(kZeroNormal);
+  if (std::find(zero, zero + w.size(), true) != zero + w.size()) deviations_.insert(kZeroNormal);
   const GLint last = first + count - 1;
   if (normal_array_.enabled) {
     const glm::dvec4 n = attribute(normal_array_, last, 3, true, glm::dvec4(0));
@@ -1110,9 +1110,9 @@ void Context::flush_primitive() {
           for (size_t t = count * p / parts; t < count * (p + 1) / parts; ++t)
             emit_triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, out, p == 0 ? scratch : local);
         });
-        std::vector<const std::vector<raster::Triangle>*> lists = {&tris};
-        for (const auto& part : tri_parts_) lists.push_back(&part);
-        raster::draw_triangles(fb_, lists, rs, w);
+        const std::vector<raster::Triangle>* lists[raster::Workers::kMax] = {&tris};
+        for (size_t p = 1; p < parts; ++p) lists[p] = &tri_parts_[p - 1];
+        raster::draw_triangles(fb_, lists, parts, rs, w);
         verts_.clear();
         return;
       }
@@ -1142,7 +1142,8 @@ void Context::flush_primitive() {
       for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
       break;
   }
-  if (!tris.empty()) raster::draw_triangles(fb_, {&tris}, rs, workers());
+  const std::vector<raster::Triangle>* list = &tris;
+  if (!tris.empty()) raster::draw_triangles(fb_, &list, 1, rs, workers());
   verts_.clear();
 }
 

@@ -107,4 +107,20 @@ TEST(Cli, BadInputIsAnErrorNotACrash) {
   EXPECT_NE(ffcompat("frobnicate").status, 0);
 }
 
+
+TEST(Cli, BenchReportsMediansTheRatioAndNoAllocationPerFrame) {
+  const Result r = ffcompat("bench --scene icosphere --depth 3 --frames 6 --block 3 --backends mesa,soft,soft-double --json");
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const double mesa = j["median_ms"]["mesa"], soft = j["median_ms"]["soft"];
+  EXPECT_GT(mesa, 0);
+  EXPECT_GT(soft, 0);
+  EXPECT_DOUBLE_EQ(j["speedup"].get<double>(), mesa / soft);
+  EXPECT_EQ(j["frames"], 6);
+  EXPECT_GE(j["spread"]["soft"]["max_ms"].get<double>(), soft);
+  // The memory goal: in steady state our pipeline allocates nothing, on either path.
+  EXPECT_EQ(j["allocations_per_frame"]["soft"], 0.0);
+  EXPECT_EQ(j["allocations_per_frame"]["soft-double"], 0.0);
+}
+
 }  // namespace

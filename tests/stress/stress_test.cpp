@@ -246,7 +246,8 @@ TEST(Harness, TheRasterCountsFragmentsFromNonFiniteColours) {
   raster::reset_nonfinite_fragments();
   const std::vector<raster::Triangle> one = {t};
   raster::Workers workers(1);
-  raster::draw_triangles(fb, {&one}, s, workers);
+  const std::vector<raster::Triangle>* list = &one;
+  raster::draw_triangles(fb, &list, 1, s, workers);
   EXPECT_GT(raster::nonfinite_fragments(), 20u);
 
   raster::reset_nonfinite_fragments();

@@ -1,0 +1,38 @@
+// Counts the program's C++ heap allocations, so that `ffcompat bench` can report how many a frame
+// makes in steady state (the goal is none). Replacing the global operator new is the one portable
+// way to see them; it costs an atomic increment per allocation.
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "cli/common.h"
+
+namespace {
+std::atomic<uint64_t> g_allocations{0};
+}
+
+namespace ffc::cli {
+uint64_t allocations() { return g_allocations.load(std::memory_order_relaxed); }
+}  // namespace ffc::cli
+
+void* operator new(std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void* operator new(std::size_t n, std::align_val_t a) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  const std::size_t align = static_cast<std::size_t>(a);
+  if (void* p = std::aligned_alloc(align, (n + align - 1) / align * align)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }

@@ -1,0 +1,103 @@
+// The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES: vertices lit in batches,
+// triangles binned to the threads that own their rows) draws what the general path draws
+// (immediate mode: vertex by vertex, triangles set up and then rasterized), bit for bit, whatever
+// the state and the number of threads.
+#include <gtest/gtest.h>
+
+#include "backends/backend.h"
+#include "image/compare.h"
+#include "scene/scene.h"
+#include "state/context.h"
+
+namespace ffc {
+namespace {
+
+image::Image draw(scene::Description d, scene::DrawPath path, int threads) {
+  for (scene::Object& o : d.objects) o.draw = path;
+  auto soft = backends::make("soft");
+  soft->begin(d.width, d.height);
+  state::Context::current()->set_threads(threads);
+  scene::draw(d);
+  return soft->read();
+}
+
+// Pixels that are not the background.
+double drawn_share(const image::Image& img) {
+  size_t n = 0;
+  for (size_t i = 0; i < img.rgba.size(); i += 4) n += img.rgba[i] | img.rgba[i + 1] | img.rgba[i + 2];
+  return double(n) / double(img.rgba.size() / 4);
+}
+
+struct Case {
+  std::string name;
+  scene::Description d;
+};
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+std::vector<Case> cases() {
+  auto sphere = [](int depth) {
+    scene::Spec s = scene::builtin("icosphere");
+    s.depth = depth;
+    s.normals = mesh::NormalSource::Average;
+    return scene::describe(s);
+  };
+  std::vector<Case> out;
+  out.push_back({"smooth", sphere(4)});
+  {
+    scene::Description d = sphere(3);
+    d.shade = scene::Shade::Flat;  // the provoking (third) vertex's colour
+    out.push_back({"flat", d});
+  }
+  {
+    scene::Description d = sphere(4);  // the inside shows, lit with the back material
+    d.cull_face = true, d.cull_mode = scene::Face::Front, d.light_model.two_sided = true;
+    d.back.diffuse = {0.1f, 0.7f, 0.2f, 1};
+    out.push_back({"two_sided_front_culled", d});
+  }
+  {
+    scene::Description d = sphere(4);
+    d.lights[0].specular = {1, 1, 1, 1}, d.front.specular = {1, 1, 1, 1};
+    d.light_model.separate_specular = true;
+    out.push_back({"separate_specular", d});
+  }
+  {
+    scene::Description d = sphere(3);  // primitive order decides: back faces may show
+    d.depth_test = false;
+    out.push_back({"no_depth_test", d});
+  }
+  {
+    scene::Description d = sphere(4);  // the near plane cuts the front cap: clipped triangles
+    d.camera.z_near = 3.4;
+    out.push_back({"near_plane_clips", d});
+  }
+  {
+    scene::Description d = sphere(5);  // bands cut short by the framebuffer's edges
+    d.width = 301, d.height = 77;
+    out.push_back({"odd_size", d});
+  }
+  {
+    scene::Description d = sphere(2);  // unlit: the current colour, clamped
+    d.lighting = false;
+    d.objects[0].color.kind = scene::ColorSource::Kind::Normal;
+    out.push_back({"unlit_colour_array", d});
+  }
+  return out;
+}
+
+class TriangleList : public ::testing::TestWithParam<Case> {};
+
+TEST_P(TriangleList, DrawsWhatTheGeneralPathDraws) {
+  const scene::Description& d = GetParam().d;
+  const image::Image general = draw(d, scene::DrawPath::Immediate, 1);
+  EXPECT_GT(drawn_share(general), 0.005) << "a picture with something in it";
+  for (int threads : {1, 2, 3}) {
+    EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Elements, threads)).max_diff, 0) << threads;
+    EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Arrays, threads)).max_diff, 0) << threads;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(States, TriangleList, ::testing::ValuesIn(cases()),
+                         [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace ffc
