@@ -40,9 +40,9 @@ struct ShadedVertices {
   }
 };
 
-// Vertex i's window position and snapped position from its clip coordinates (vs.clip[i]); the
-// colours are the caller's.
-void map_shaded(ShadedVertices& vs, size_t i, const State& s);
+// Vertices [first, first + count): window and snapped positions from their clip coordinates
+// (vs.clip); the colours are the caller's.
+void map_shaded(ShadedVertices& vs, size_t first, size_t count, const State& s);
 
 // The binned triangles of a draw, kept between draws so that steady state allocates nothing.
 struct TriangleBins {

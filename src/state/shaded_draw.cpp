@@ -81,7 +81,6 @@ void Context::shade_range(GLint first, GLint count) {
         const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)));
         const size_t o = size_t(i - first);
         out.clip[o] = fmat::transform(mvp_f_, obj);
-        raster::map_shaded(out, o, rs);
         const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
                                                   : color_;
         if (!lighting_) {
@@ -104,6 +103,7 @@ void Context::shade_range(GLint first, GLint count) {
         }
         normal[j] = glm::vec3(n);
       }
+      raster::map_shaded(out, size_t(b - first), size_t(m), rs);
       if (!lighting_) continue;
       kernel_f_(prepared_f_, eye, normal, color, size_t(m), lit);
       for (int j = 0; j < m; ++j) {
