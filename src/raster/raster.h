@@ -144,7 +144,7 @@ void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, 
                     Workers& workers);  // the `count` lists one after the other
 
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
-void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth);
+void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth, Workers& workers);
 
 // Fragments written from a non-finite colour (a NaN or an infinity in any channel before the
 // clamp), counted process-wide for the stress suite: reset, draw, read.

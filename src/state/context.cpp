@@ -623,7 +623,7 @@ void Context::Clear(GLbitfield mask) {
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
   if (render_mode_ != GL_RENDER) return;
-  raster::clear(fb_, mask & GL_COLOR_BUFFER_BIT, mask & GL_DEPTH_BUFFER_BIT, clear_color_, clear_depth_);
+  raster::clear(fb_, mask & GL_COLOR_BUFFER_BIT, mask & GL_DEPTH_BUFFER_BIT, clear_color_, clear_depth_, workers());
 }
 
 void Context::LineWidth(float w) {

@@ -39,6 +39,8 @@ class Context {
   Context(int width, int height, Precision precision = Precision::Float);
 
   raster::Framebuffer& framebuffer() { return fb_; }
+  // The colour buffer, top row first (RGBA8), copied by the workers.
+  void read_top_down(uint8_t* out);
   Precision precision() const { return precision_; }
   void set_threads(int n) {
     threads_ = n < 1 ? 1 : n;

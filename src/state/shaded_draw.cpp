@@ -138,6 +138,15 @@ void Context::shade_range(GLint first, GLint count) {
   }
 }
 
+void Context::read_top_down(uint8_t* out) {
+  const size_t row = size_t(fb_.width) * 4;
+  raster::Workers& w = workers();
+  w.run([&](int share) {
+    for (int y = fb_.height * share / w.size(); y < fb_.height * (share + 1) / w.size(); ++y)  // GL's row 0 is the bottom one
+      std::memcpy(out + size_t(y) * row, &fb_.color[size_t(fb_.height - 1 - y) * row], row);
+  });
+}
+
 void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
   raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers(), bins_);
 }

@@ -34,9 +34,7 @@ void SoftBackend::read_into(image::Image& img) {
   const raster::Framebuffer& fb = context_->framebuffer();
   img.width = fb.width, img.height = fb.height;
   img.rgba.resize(fb.color.size());
-  const size_t row = size_t(fb.width) * 4;
-  for (int y = 0; y < fb.height; ++y)  // GL's row 0 is the bottom one
-    std::memcpy(&img.rgba[size_t(y) * row], &fb.color[size_t(fb.height - 1 - y) * row], row);
+  context_->read_top_down(img.rgba.data());
 }
 
 }  // namespace ffc::backends
