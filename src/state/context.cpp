@@ -260,6 +260,7 @@ void Context::LightModeli(GLenum pname, GLint param) {
 
 bool Context::set_material(GLenum face, GLenum pname, const double* v) {
   if (!valid_face(face)) return error(GL_INVALID_ENUM), false;
+  undefer();  // the vertices so far are lit with the material as it was
   switch (pname) {
     case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE:
     case GL_COLOR_INDEXES: break;
@@ -773,6 +774,12 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
 }
 
 void Context::process_vertex(const glm::dvec4& obj) {
+  if (deferred_) {  // lit with the others at glEnd
+    deferred_pos_.push_back(glm::vec4(obj));  // the float path rounds positions so anyway
+    deferred_normal_.push_back(normal_);
+    deferred_color_.push_back(color_);
+    return;
+  }
   update_vertex_constants();
   bool zero_normal = false;
   verts_.push_back(vertex(obj, normal_, color_, &zero_normal));
@@ -829,12 +836,38 @@ void Context::Begin(GLenum mode) {
   prim_mode_ = mode;
   verts_.clear();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
+  // Triangles in immediate mode take the triangle-list path: the vertices are kept as sent and
+  // lit together at glEnd, unless a glMaterial between them changes the lighting (undefer()).
+  deferred_ = shaded_path(mode);
+  deferred_pos_.clear(), deferred_normal_.clear(), deferred_color_.clear();
+}
+
+void Context::undefer() {
+  if (!deferred_) return;
+  deferred_ = false;
+  for (size_t i = 0; i < deferred_pos_.size(); ++i) {
+    const glm::dvec3 normal = normal_;
+    const glm::dvec4 color = color_;
+    normal_ = deferred_normal_[i], color_ = deferred_color_[i];  // as they were at that glVertex
+    process_vertex(glm::dvec4(deferred_pos_[i]));
+    normal_ = normal, color_ = color;
+  }
 }
 
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = false;
-  flush_primitive();
+  if (!deferred_) return flush_primitive();
+  deferred_ = false;
+  // The kept vertices as client arrays for the triangle-list path (no GL call can change the
+  // arrays between glBegin and glEnd, so borrowing them is safe).
+  const ClientArray arrays[3] = {vertex_array_, normal_array_, color_array_};
+  vertex_array_ = {true, 4, GL_FLOAT, sizeof(glm::vec4), deferred_pos_.data()};
+  normal_array_ = {true, 3, GL_DOUBLE, sizeof(glm::dvec3), deferred_normal_.data()};
+  color_array_ = {true, 4, GL_DOUBLE, sizeof(glm::dvec4), deferred_color_.data()};
+  shade_range(0, GLint(deferred_pos_.size()));
+  vertex_array_ = arrays[0], normal_array_ = arrays[1], color_array_ = arrays[2];
+  draw_shaded(nullptr, deferred_pos_.size() / 3);
 }
 
 // The array pointers check as Mesa's varray.c does: the stride first, then the type, then the size.

@@ -42,6 +42,9 @@ class Context {
   // The colour buffer, top row first (RGBA8), copied by the workers.
   void read_top_down(uint8_t* out);
   Precision precision() const { return precision_; }
+  // Off: every primitive takes the general path (vertex by vertex, then set-up triangles), which
+  // the triangle-list path is tested against. The picture does not change.
+  void set_triangle_lists(bool on) { triangle_lists_ = on; }
   void set_threads(int n) {
     threads_ = n < 1 ? 1 : n;
     workers_.reset();
@@ -140,6 +143,7 @@ class Context {
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
   void fetch_vertex(GLint i);  // from the enabled client arrays, as glArrayElement
   void process_vertex(const glm::dvec4& obj);
+  void undefer();  // immediate-mode vertices kept for glEnd: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
                         bool* zero_normal) const;
@@ -214,6 +218,11 @@ class Context {
   int threads_ = 2;
   std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
   raster::ShadedVertices shaded_;  // the triangle-list path's vertices
+  bool triangle_lists_ = true;
+  bool deferred_ = false;          // glBegin(GL_TRIANGLES): vertices kept as sent, lit at glEnd
+  std::vector<glm::vec4> deferred_pos_;
+  std::vector<glm::dvec3> deferred_normal_;
+  std::vector<glm::dvec4> deferred_color_;
   raster::TriangleBins bins_;
 
   // Feedback

@@ -28,6 +28,16 @@ inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalize
     }
     return glm::dvec4(f[0], f[1], f[2], f[3]);
   }
+  if (a.type == GL_DOUBLE) {  // and immediate mode's kept normals and colours
+    double d[4] = {v.x, v.y, v.z, v.w};
+    switch (n) {
+      case 4: std::memcpy(d, p, 32); break;
+      case 3: std::memcpy(d, p, 24); break;
+      case 2: std::memcpy(d, p, 16); break;
+      default: std::memcpy(d, p, 8); break;
+    }
+    return glm::dvec4(d[0], d[1], d[2], d[3]);
+  }
   for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
   return v;
 }
@@ -35,7 +45,7 @@ inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalize
 }  // namespace
 
 bool Context::shaded_path(GLenum mode) const {
-  return mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float;
+  return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float;
 }
 
 raster::Workers& Context::workers() {

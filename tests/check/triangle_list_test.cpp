@@ -1,10 +1,11 @@
-// The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES: vertices lit in batches,
-// triangles binned to the threads that own their rows) draws what the general path draws
-// (immediate mode: vertex by vertex, triangles set up and then rasterized), bit for bit, whatever
-// the state and the number of threads.
+// The triangle-list path (GL_TRIANGLES from glDrawArrays, glDrawElements or immediate mode:
+// vertices lit in batches, triangles binned to the threads that own their rows) draws what the
+// general path draws (vertex by vertex, triangles set up and then rasterized), bit for bit,
+// whatever the state and the number of threads.
 #include <gtest/gtest.h>
 
 #include "backends/backend.h"
+#include "gl/dispatch.h"
 #include "image/compare.h"
 #include "scene/scene.h"
 #include "state/context.h"
@@ -12,11 +13,12 @@
 namespace ffc {
 namespace {
 
-image::Image draw(scene::Description d, scene::DrawPath path, int threads) {
+image::Image draw(scene::Description d, scene::DrawPath path, int threads, bool triangle_lists = true) {
   for (scene::Object& o : d.objects) o.draw = path;
   auto soft = backends::make("soft");
   soft->begin(d.width, d.height);
   state::Context::current()->set_threads(threads);
+  state::Context::current()->set_triangle_lists(triangle_lists);
   scene::draw(d);
   return soft->read();
 }
@@ -88,16 +90,43 @@ class TriangleList : public ::testing::TestWithParam<Case> {};
 
 TEST_P(TriangleList, DrawsWhatTheGeneralPathDraws) {
   const scene::Description& d = GetParam().d;
-  const image::Image general = draw(d, scene::DrawPath::Immediate, 1);
+  const image::Image general = draw(d, scene::DrawPath::Immediate, 1, false);
   EXPECT_GT(drawn_share(general), 0.005) << "a picture with something in it";
-  for (int threads : {1, 2, 3}) {
-    EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Elements, threads)).max_diff, 0) << threads;
-    EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Arrays, threads)).max_diff, 0) << threads;
-  }
+  for (int threads : {1, 2, 3})
+    for (auto path : {scene::DrawPath::Elements, scene::DrawPath::Arrays, scene::DrawPath::Immediate})
+      EXPECT_EQ(image::compare(general, draw(d, path, threads)).max_diff, 0) << threads << " " << scene::to_string(path);
 }
 
 INSTANTIATE_TEST_SUITE_P(States, TriangleList, ::testing::ValuesIn(cases()),
                          [](const auto& info) { return info.param.name; });
+
+// glMaterial between glBegin and glEnd changes the material of the vertices that follow: the
+// vertices kept so far are lit with the material they were sent under.
+TEST(TriangleList, MaterialChangesBetweenVerticesLightTheVerticesThatFollow) {
+  auto picture = [](bool triangle_lists) {
+    auto soft = backends::make("soft");
+    soft->begin(64, 64);
+    state::Context::current()->set_triangle_lists(triangle_lists);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glBegin(GL_TRIANGLES);
+    const GLfloat red[] = {1, 0, 0, 1}, green[] = {0, 1, 0, 1}, blue[] = {0, 0, 1, 1};
+    glNormal3f(0, 0, 1);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+    glVertex2f(-0.9f, -0.9f);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, green);
+    glVertex2f(0.9f, -0.9f);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, blue);
+    glVertex2f(0, 0.9f);
+    glEnd();
+    return soft->read();
+  };
+  const image::Image general = picture(false), lists = picture(true);
+  EXPECT_EQ(image::compare(general, lists).max_diff, 0);
+  // A smooth mix of the three: red near the first corner, blue near the third.
+  EXPECT_GT(general.at(6, 60)[0], 2 * general.at(6, 60)[2]);
+  EXPECT_GT(general.at(32, 6)[2], 2 * general.at(32, 6)[0]);
+}
 
 }  // namespace
 }  // namespace ffc
