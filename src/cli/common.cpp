@@ -17,6 +17,9 @@ void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals) {
   }
   app->add_option("--depth", depth, "Icosphere subdivision depth, 0..12 (default 3, or the file's)")->check(CLI::Range(0, 12));
   app->add_option("--size", size, "Framebuffer WxH (default: cube 640x640, icosphere 512x512, or the file's)");
+  app->add_option("--draw", draw,
+                  "How every mesh is sent: arrays (glDrawArrays), elements (glDrawElements), immediate "
+                  "(glBegin/glVertex, as seed 004) or auto (default: arrays for face normals, elements otherwise)");
   cam_angle_option = app->add_option("--cam-angle", cam_angle, "Cube camera angle around y, degrees (built-in cube only)")->capture_default_str();
   cam_height_option = app->add_option("--cam-height", cam_height, "Cube camera height (built-in cube only)")->capture_default_str();
   app->add_option("--backend", backend, "Renderer: mesa")->capture_default_str();
@@ -49,7 +52,14 @@ scene::Spec SceneOptions::spec() const {
 }
 
 scene::Description SceneOptions::description() const {
-  if (!is_file()) return scene::describe(spec());
+  const std::optional<scene::DrawPath> path =
+      draw.empty() ? std::nullopt : std::optional<scene::DrawPath>(scene::parse_draw_path(draw));  // throws for a bad name
+  auto with_path = [&](scene::Description d) {
+    if (path)
+      for (scene::Object& o : d.objects) o.draw = *path;
+    return d;
+  };
+  if (!is_file()) return with_path(scene::describe(spec()));
   if ((cam_angle_option && cam_angle_option->count()) || (cam_height_option && cam_height_option->count()))
     throw std::invalid_argument("--cam-angle and --cam-height move the built-in cube's camera; a scene file has its own [camera]");
   // Check the options before reading the file, so a bad option is reported as such.
@@ -75,12 +85,13 @@ scene::Description SceneOptions::description() const {
     if (depth >= 0 && o.kind == scene::Object::Kind::Icosphere) o.depth = depth;
   }
   if (!size.empty()) d.width = width, d.height = height;
-  return d;
+  return with_path(d);
 }
 
 nlohmann::json SceneOptions::json(const scene::Description& d) const {
   nlohmann::json j = to_json(d);
   if (!is_file() && scene == "cube") j["cam_angle"] = cam_angle, j["cam_height"] = cam_height;
+  if (!draw.empty()) j["draw"] = draw;
   return j;
 }
 

@@ -16,7 +16,7 @@ namespace ffc::cli {
 // --shade the shade model, --normals every mesh's normals, --depth every icosphere's depth, --size
 // the framebuffer. --cam-angle and --cam-height move the built-in cube's camera only.
 struct SceneOptions {
-  std::string scene = "cube", shade, normals, size, backend = "mesa";
+  std::string scene = "cube", shade, normals, size, backend = "mesa", draw;
   int depth = -1;
   double cam_angle = 0, cam_height = 1;
   const CLI::Option* cam_angle_option = nullptr;   // set by add_to: whether the camera was moved
