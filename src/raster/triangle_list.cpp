@@ -238,6 +238,8 @@ void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* 
   const int fb_w = l.fb.width, fb_h = l.fb.height;
   uint32_t* out[kMaxThreads];  // write pointers, kept in registers rather than counts in memory
   for (int o = 0; o < threads; ++o) out[o] = lists[o];
+  uint8_t owner[detail::Bands::kMax + 1];  // band b's thread, b % threads without a division
+  for (int b = 0; b <= detail::Bands::kMax; ++b) owner[b] = uint8_t(b % threads);
   for (size_t tri = first; tri < last; ++tri) {
     if (l.idx && tri + kAhead < last)  // indexed vertices are scattered: ask for them early
       for (int k = 0; k < 3; ++k) __builtin_prefetch(&l.vs.snapped[l.idx[3 * (tri + kAhead) + k]]);
@@ -254,7 +256,7 @@ void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* 
     if (std::max(0, (xlo - 128 + 255) >> 8) > std::min(fb_w - 1, (xhi - 128) >> 8)) continue;
     const int band_lo = row_lo / kBandRows, band_hi = std::min(row_hi / kBandRows, band_lo + threads - 1);
     for (int b = band_lo; b <= band_hi; ++b) {
-      *out[b % threads]++ = uint32_t(tri);
+      *out[owner[b]]++ = uint32_t(tri);
     }
   }
   for (int o = 0; o < threads; ++o) counts[o] = size_t(out[o] - lists[o]);
