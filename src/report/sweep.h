@@ -72,6 +72,8 @@ scene::Description describe(const Lighting& l, int depth, const Shading& s);
 // same pixels as scene::render(describe(...)) without rebuilding the mesh every frame
 // (tests/report checks that they agree).
 image::Image frame(const Lighting& l, const Shading& s, const mesh::DrawArrays& arrays, backends::Backend& b);
+// The same into `out`, whose memory is reused (the timed frames allocate nothing for the picture).
+void frame(const Lighting& l, const Shading& s, const mesh::DrawArrays& arrays, backends::Backend& b, image::Image& out);
 
 struct Row {
   int depth = 0;
