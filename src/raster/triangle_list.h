@@ -1,7 +1,7 @@
-// Triangles that share their vertices, as glDrawArrays and glDrawElements give them. Each vertex
-// is mapped to the window once; then every thread walks the whole list and sets up and draws only
-// what falls in its own bands of rows, so no triangle is stored between setup and drawing and the
-// planes of a triangle that covers no pixel centre are never computed.
+// Triangles that share their vertices, as glDrawArrays, glDrawElements and immediate mode give
+// them. Each vertex is mapped to the window once; each triangle is binned once, as a 4-byte
+// number, to the threads whose bands of rows it meets, and set up where it is drawn, so the planes
+// of a triangle that covers no pixel centre are never computed.
 #pragma once
 #include <climits>
 #include <cstdint>

@@ -774,10 +774,10 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
 }
 
 void Context::process_vertex(const glm::dvec4& obj) {
-  if (deferred_) {  // lit with the others at glEnd
+  if (deferred_) {  // lit with the others at glEnd; only what the lighting reads is kept
     deferred_pos_.push_back(glm::vec4(obj));  // the float path rounds positions so anyway
-    deferred_normal_.push_back(normal_);
-    deferred_color_.push_back(color_);
+    if (lighting_) deferred_normal_.push_back(normal_);
+    if (!lighting_ || color_material_) deferred_color_.push_back(color_);
     return;
   }
   update_vertex_constants();
@@ -848,7 +848,9 @@ void Context::undefer() {
   for (size_t i = 0; i < deferred_pos_.size(); ++i) {
     const glm::dvec3 normal = normal_;
     const glm::dvec4 color = color_;
-    normal_ = deferred_normal_[i], color_ = deferred_color_[i];  // as they were at that glVertex
+    // As they were at that glVertex (what was not kept is not read).
+    if (!deferred_normal_.empty()) normal_ = deferred_normal_[i];
+    if (!deferred_color_.empty()) color_ = deferred_color_[i];
     process_vertex(glm::dvec4(deferred_pos_[i]));
     normal_ = normal, color_ = color;
   }
@@ -863,8 +865,8 @@ void Context::End() {
   // arrays between glBegin and glEnd, so borrowing them is safe).
   const ClientArray arrays[3] = {vertex_array_, normal_array_, color_array_};
   vertex_array_ = {true, 4, GL_FLOAT, sizeof(glm::vec4), deferred_pos_.data()};
-  normal_array_ = {true, 3, GL_DOUBLE, sizeof(glm::dvec3), deferred_normal_.data()};
-  color_array_ = {true, 4, GL_DOUBLE, sizeof(glm::dvec4), deferred_color_.data()};
+  normal_array_ = {!deferred_normal_.empty(), 3, GL_DOUBLE, sizeof(glm::dvec3), deferred_normal_.data()};
+  color_array_ = {!deferred_color_.empty(), 4, GL_DOUBLE, sizeof(glm::dvec4), deferred_color_.data()};
   shade_range(0, GLint(deferred_pos_.size()));
   vertex_array_ = arrays[0], normal_array_ = arrays[1], color_array_ = arrays[2];
   draw_shaded(nullptr, deferred_pos_.size() / 3);

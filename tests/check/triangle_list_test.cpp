@@ -78,6 +78,13 @@ std::vector<Case> cases() {
     out.push_back({"odd_size", d});
   }
   {
+    scene::Description d = sphere(3);  // lit, the diffuse colour following each vertex's colour
+    d.color_material.enabled = true;
+    d.color_material.mode = scene::ColorMode::Diffuse;
+    d.objects[0].color.kind = scene::ColorSource::Kind::Position;
+    out.push_back({"colour_material", d});
+  }
+  {
     scene::Description d = sphere(2);  // unlit: the current colour, clamped
     d.lighting = false;
     d.objects[0].color.kind = scene::ColorSource::Kind::Normal;
