@@ -1,7 +1,8 @@
-// The triangle-list path: glDrawArrays and glDrawElements with GL_TRIANGLES while rendering in
-// float. Vertices are lit in batches on every thread into compact records, and the rasterizer
-// reads them in place (raster/triangle_list.h). Same results as the general path, which takes
-// every other primitive, feedback and the double pipeline.
+// The triangle-list path: GL_TRIANGLES from glDrawArrays, glDrawElements and immediate mode
+// (Context::End lends the kept vertices as client arrays) while rendering in float. Vertices are
+// lit in batches on every thread into compact records, and the rasterizer reads them in place
+// (raster/triangle_list.h). The same pixels as the general path, which takes every other
+// primitive, feedback and the double pipeline.
 #include <algorithm>
 
 #include "state/client_arrays.h"
