@@ -19,12 +19,7 @@ void map_one(ShadedVertices& vs, size_t i, const State& s) {
   ShadedVertex& v = vs.hot[i];
   v.w = clip.w;
   vs.snapped[i] = {kNotMapped, 0};
-  // outside_planes(clip) != 0 in a few SSE instructions: beyond a plane (lane 3 flags w < 0), or
-  // not finite (x * 0 is NaN), or w not positive or its 1/w not a normal float.
-  const __m128 c = _mm_loadu_ps(&clip.x), cw = _mm_set1_ps(clip.w), zero = _mm_setzero_ps();
-  const __m128 beyond = _mm_or_ps(_mm_cmpgt_ps(c, cw), _mm_cmplt_ps(c, _mm_sub_ps(zero, cw)));
-  const __m128 nonfinite = _mm_cmpunord_ps(_mm_mul_ps(c, zero), zero);
-  if (_mm_movemask_ps(_mm_or_ps(beyond, nonfinite)) || !(clip.w > 0) || !w_mappable(clip.w)) return;
+  if (outside_planes(clip)) return;
   const FloatWindow w = map_float(clip, s);
   constexpr int64_t kLimit = int64_t(1) << 30;  // inside, but too far out for 32-bit coordinates: clipped
   if (w.sx < -kLimit || w.sx > kLimit || w.sy < -kLimit || w.sy > kLimit) return;

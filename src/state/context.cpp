@@ -981,11 +981,8 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     }
   }
   elements_.resize(size_t(count));
-  lo = UINT32_MAX, hi = 0;
-  for (GLsizei i = 0; i < count; ++i) {
-    elements_[i] = uint32_t(read_component(p, type, i, false));
-    lo = std::min(lo, elements_[i]), hi = std::max(hi, elements_[i]);
-  }
+  for (GLsizei i = 0; i < count; ++i) elements_[i] = uint32_t(read_component(p, type, i, false));
+  if (count > 0) index_range(elements_.data(), elements_.size(), lo, hi);
   if (count > 0 && shaded_path(mode)) {
     shade_range(GLint(lo), GLint(hi - lo + 1));
     for (uint32_t& e : elements_) e -= lo;

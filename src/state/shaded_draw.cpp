@@ -16,29 +16,26 @@ namespace {
 constexpr int kBatch = 64;                 // vertices per call of the lighting kernel
 constexpr GLint kParallelShading = 2048;  // below this one thread lights them all
 
-// Components [0, n) of element i, the others from `v`; float arrays read directly.
+// Components [0, n) of an element of T, the others from `v`, with fixed-size copies (a copy of a
+// run-time size is a library call, and a vector indexed by a run-time number goes through memory).
+template <typename T>
+glm::dvec4 direct(const uint8_t* p, int n, const glm::dvec4& v) {
+  T d[4] = {T(v.x), T(v.y), T(v.z), T(v.w)};  // the defaults are 0 and 1: exact in T
+  switch (n) {
+    case 4: std::memcpy(d, p, 4 * sizeof(T)); break;
+    case 3: std::memcpy(d, p, 3 * sizeof(T)); break;
+    case 2: std::memcpy(d, p, 2 * sizeof(T)); break;
+    default: std::memcpy(d, p, sizeof(T)); break;
+  }
+  return glm::dvec4(d[0], d[1], d[2], d[3]);
+}
+
+// Components [0, n) of element i, the others from `v`; float and double arrays (immediate mode's
+// kept vertices among them) read directly.
 inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
   const uint8_t* p = element(a, i);
-  if (a.type == GL_FLOAT) {  // fixed-size copies: no indexing of a vector by a run-time number
-    float f[4] = {float(v.x), float(v.y), float(v.z), float(v.w)};  // the defaults are 0 and 1
-    switch (n) {
-      case 4: std::memcpy(f, p, 16); break;
-      case 3: std::memcpy(f, p, 12); break;
-      case 2: std::memcpy(f, p, 8); break;
-      default: std::memcpy(f, p, 4); break;
-    }
-    return glm::dvec4(f[0], f[1], f[2], f[3]);
-  }
-  if (a.type == GL_DOUBLE) {  // and immediate mode's kept normals and colours
-    double d[4] = {v.x, v.y, v.z, v.w};
-    switch (n) {
-      case 4: std::memcpy(d, p, 32); break;
-      case 3: std::memcpy(d, p, 24); break;
-      case 2: std::memcpy(d, p, 16); break;
-      default: std::memcpy(d, p, 8); break;
-    }
-    return glm::dvec4(d[0], d[1], d[2], d[3]);
-  }
+  if (a.type == GL_FLOAT) return direct<float>(p, n, v);
+  if (a.type == GL_DOUBLE) return direct<double>(p, n, v);
   for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
   return v;
 }
