@@ -123,8 +123,7 @@ struct Triangle {
   // Planes: value at pixel centre (X, Y) = p0 + px X + py Y. Depth in double (24 bits must
   // survive), 1/w and colour / w (secondary colour summed in) in float, as llvmpipe's.
   double z[3];
-  float inv_w[3];
-  alignas(16) float c0[4], cx[4], cy[4];
+  float inv_w[3], c0[4], cx[4], cy[4];  // one after another: the box kernel reads them as 15 floats
 };
 
 // False when the triangle covers no pixel centre once snapped.

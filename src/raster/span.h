@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstring>
 
+#include "raster/box.h"
 #include "raster/raster.h"
 
 namespace ffc::raster::detail {
@@ -25,7 +26,7 @@ struct Bands {
 };
 
 // The depth functions the row loop is compiled for; the others go through depth_pass.
-enum DepthMode { kNoDepth, kLess, kLequal, kAnyDepth };
+enum DepthMode : int { kNoDepth, kLess, kLequal, kAnyDepth };
 inline DepthMode depth_mode(const State& s) {
   if (!s.depth_test) return kNoDepth;
   return s.depth_func == GL_LESS ? kLess : s.depth_func == GL_LEQUAL ? kLequal : kAnyDepth;
@@ -157,30 +158,32 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
   bool ready = false;
   uint64_t nonfinite = 0;
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
-  // Pixels lo..hi of row py are covered: planes at the first of them, stepped along the row.
+  // Pixels lo..hi of row py are covered. Each pixel's values come from the planes at its own
+  // centre, (p0 + px X) + py Y, never stepped from a neighbour: the vector box kernel
+  // (raster/box.h) computes the same bits eight pixels at a time.
   auto draw_span = [&](int py, int lo, int hi) {
     if (!ready) {
       if (!planes()) return false;
       ready = true;
     }
-    const double cy = py + 0.5, x0 = lo + 0.5;
-    double z = t.z[0] + t.z[1] * x0 + t.z[2] * cy;
-    float iw = t.inv_w[0] + t.inv_w[1] * float(x0) + t.inv_w[2] * float(cy);
-    __m128 col = _mm_add_ps(_mm_load_ps(t.c0), _mm_add_ps(_mm_mul_ps(_mm_load_ps(t.cx), _mm_set1_ps(float(x0))),
-                                                          _mm_mul_ps(_mm_load_ps(t.cy), _mm_set1_ps(float(cy)))));
-    const __m128 dcol = _mm_load_ps(t.cx);
+    const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_loadu_ps(t.cy);
+    const double y = py + 0.5;
+    const float fy = float(y);
     uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
     uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
     for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
+      const double x = px + 0.5;
       bool pass = true;
       if constexpr (D != kNoDepth) {
-        const uint32_t zi = depth24(z);
+        const uint32_t zi = depth24(t.z[0] + t.z[1] * x + t.z[2] * y);
         if constexpr (D == kLess) pass = zi < *zp;
         else if constexpr (D == kLequal) pass = zi <= *zp;
         else pass = depth_pass(depth_func, zi, *zp);
         if (pass) *zp = zi;
       }
       if (pass) {
+        const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + t.inv_w[2] * fy;
+        const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), _mm_mul_ps(cy, _mm_set1_ps(fy)));
         // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
         __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
         nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
@@ -190,8 +193,6 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
         const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
         std::memcpy(o, &rgba, 4);
       }
-      z += t.z[1], iw += t.inv_w[1];
-      col = _mm_add_ps(col, dcol);
     }
     return true;
   };
@@ -219,6 +220,11 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!(mask & 3) || !bands.owns(py / kBandRows)) continue;
       if (!draw_span(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
     }
+  } else if (t.xmax - t.xmin < 8 && t.ymax - t.ymin < 8 && ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
+    int32_t edges[kEdgeFields];
+    box_edges(t, edges);
+    const BoxCoverage c = box_coverage({edges, 1}, bands);
+    if (c.blocks && planes()) nonfinite = box_shade<D>(fb, {t.z, t.inv_w, 1}, t.xmin, t.ymin, depth_func, c);
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
     // Small (most triangles): edge functions relative to the box's first pixel centre fit in 32
     // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.

@@ -182,7 +182,7 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
   }
   __m128 out[3];
   for (int i = 0; i < 3; ++i) out[i] = _mm_movelh_ps(_mm_cvtpd_ps(half[0][i]), _mm_cvtpd_ps(half[1][i]));
-  _mm_store_ps(t.c0, out[0]), _mm_store_ps(t.cx, out[1]), _mm_store_ps(t.cy, out[2]);
+  _mm_storeu_ps(t.c0, out[0]), _mm_storeu_ps(t.cx, out[1]), _mm_storeu_ps(t.cy, out[2]);
   // Planes beyond float: not drawn rather than drawn from infinities (as setup_planes).
   // x * 0 is 0 for a finite x and NaN otherwise; a sum of those is NaN when any is.
   const __m128 zero = _mm_setzero_ps(), iw = _mm_set_ps(0, t.inv_w[2], t.inv_w[1], t.inv_w[0]);
@@ -190,6 +190,130 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
                                   _mm_add_ps(_mm_mul_ps(out[2], zero), _mm_mul_ps(iw, zero)));
   return _mm_movemask_ps(_mm_cmpunord_ps(probe, probe)) == 0;
 }
+
+// Eight triangles of a list set up at once, a triangle a lane, for the box kernel (raster/box.h):
+// the state draws smooth colour without secondary colour, culling or two-sided lighting. Bit for
+// bit what setup_edges, box_edges and smooth_planes give one triangle.
+struct Setup8 {
+  alignas(64) int32_t edges[detail::kEdgeFields][8];
+  alignas(64) double z[3][8];
+  alignas(64) float f[detail::kPlaneFloats][8];
+  unsigned box;   // lanes for the box kernel: box at most 8x8, vertex extents below 31 pixels
+  unsigned none;  // lanes that cover no pixel centre
+  unsigned ok;    // lanes whose planes are within float (the others are not drawn)
+};
+
+#pragma GCC push_options
+#pragma GCC target("avx2,avx512f,avx512vl")
+
+// Rows of eight floats made columns.
+void transpose8(__m256 (&r)[8]) {
+  __m256 t[8], u[8];
+  for (int i = 0; i < 4; ++i) t[2 * i] = _mm256_unpacklo_ps(r[2 * i], r[2 * i + 1]), t[2 * i + 1] = _mm256_unpackhi_ps(r[2 * i], r[2 * i + 1]);
+  for (int i = 0; i < 2; ++i) {
+    u[4 * i + 0] = _mm256_shuffle_ps(t[4 * i], t[4 * i + 2], _MM_SHUFFLE(1, 0, 1, 0));
+    u[4 * i + 1] = _mm256_shuffle_ps(t[4 * i], t[4 * i + 2], _MM_SHUFFLE(3, 2, 3, 2));
+    u[4 * i + 2] = _mm256_shuffle_ps(t[4 * i + 1], t[4 * i + 3], _MM_SHUFFLE(1, 0, 1, 0));
+    u[4 * i + 3] = _mm256_shuffle_ps(t[4 * i + 1], t[4 * i + 3], _MM_SHUFFLE(3, 2, 3, 2));
+  }
+  for (int i = 0; i < 4; ++i) r[i] = _mm256_permute2f128_ps(u[i], u[i + 4], 0x20), r[i + 4] = _mm256_permute2f128_ps(u[i], u[i + 4], 0x31);
+}
+
+// corner[c][lane]: the triangle's vertices, all mapped (lanes past the chunk repeat one).
+void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, int fb_h, Setup8& out) {
+  // Snapped positions: box, extents, area.
+  __m256i sx[3], sy[3];
+  for (int c = 0; c < 3; ++c) {
+    const __m512i xy = _mm512_i32gather_epi64(_mm256_load_si256(reinterpret_cast<const __m256i*>(corner[c])), vs.snapped.data(), 8);
+    sx[c] = _mm512_cvtepi64_epi32(xy), sy[c] = _mm512_cvtepi64_epi32(_mm512_srli_epi64(xy, 32));
+  }
+  const __m256i xlo = _mm256_min_epi32(sx[0], _mm256_min_epi32(sx[1], sx[2])), xhi = _mm256_max_epi32(sx[0], _mm256_max_epi32(sx[1], sx[2]));
+  const __m256i ylo = _mm256_min_epi32(sy[0], _mm256_min_epi32(sy[1], sy[2])), yhi = _mm256_max_epi32(sy[0], _mm256_max_epi32(sy[1], sy[2]));
+  const __m256i zero = _mm256_setzero_si256(), k127 = _mm256_set1_epi32(127), k128 = _mm256_set1_epi32(128);
+  // First pixel centre at or after the low end, last at or before the high end, in the framebuffer.
+  const __m256i xmin = _mm256_max_epi32(zero, _mm256_srai_epi32(_mm256_add_epi32(xlo, k127), 8));
+  const __m256i ymin = _mm256_max_epi32(zero, _mm256_srai_epi32(_mm256_add_epi32(ylo, k127), 8));
+  const __m256i xmax = _mm256_min_epi32(_mm256_set1_epi32(fb_w - 1), _mm256_srai_epi32(_mm256_sub_epi32(xhi, k128), 8));
+  const __m256i ymax = _mm256_min_epi32(_mm256_set1_epi32(fb_h - 1), _mm256_srai_epi32(_mm256_sub_epi32(yhi, k128), 8));
+  const __mmask8 empty = _mm256_cmpgt_epi32_mask(xmin, xmax) | _mm256_cmpgt_epi32_mask(ymin, ymax);
+  const __m256i seven = _mm256_set1_epi32(7), limit = _mm256_set1_epi32(31 * 256);
+  const __mmask8 small = _mm256_cmple_epi32_mask(_mm256_sub_epi32(xmax, xmin), seven) & _mm256_cmple_epi32_mask(_mm256_sub_epi32(ymax, ymin), seven) &
+                         _mm256_cmplt_epu32_mask(_mm256_sub_epi32(xhi, xlo), limit) & _mm256_cmplt_epu32_mask(_mm256_sub_epi32(yhi, ylo), limit) & ~empty;
+  // 32 bits hold the area of a small triangle.
+  const __m256i area = _mm256_sub_epi32(_mm256_mullo_epi32(_mm256_sub_epi32(sx[1], sx[0]), _mm256_sub_epi32(sy[2], sy[0])),
+                                        _mm256_mullo_epi32(_mm256_sub_epi32(sx[2], sx[0]), _mm256_sub_epi32(sy[1], sy[0])));
+  const __mmask8 flat = _mm256_cmpeq_epi32_mask(area, zero);
+  out.none = empty | (small & flat);
+  out.box = small & ~flat;
+  // Counter-clockwise: vertices 1 and 2 exchanged where the area is negative.
+  const __mmask8 swap = _mm256_cmplt_epi32_mask(area, zero);
+  auto exchange = [&](__m256i& a, __m256i& b) {
+    const __m256i a2 = _mm256_mask_blend_epi32(swap, a, b);
+    b = _mm256_mask_blend_epi32(swap, b, a), a = a2;
+  };
+  exchange(sx[1], sx[2]), exchange(sy[1], sy[2]);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kXmin]), xmin);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kYmin]), ymin);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kXmax]), xmax);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kYmax]), ymax);
+  const __m256i ox = _mm256_add_epi32(_mm256_slli_epi32(xmin, 8), k128), oy = _mm256_add_epi32(_mm256_slli_epi32(ymin, 8), k128);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const __m256i ex = _mm256_sub_epi32(sx[k], sx[j]), ey = _mm256_sub_epi32(sy[k], sy[j]);
+    const __m256i e0 = _mm256_sub_epi32(_mm256_mullo_epi32(ex, _mm256_sub_epi32(oy, sy[j])), _mm256_mullo_epi32(ey, _mm256_sub_epi32(ox, sx[j])));
+    const __mmask8 owns = _mm256_cmplt_epi32_mask(ey, zero) | (_mm256_cmpeq_epi32_mask(ey, zero) & _mm256_cmpgt_epi32_mask(ex, zero));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kE0 + i]), e0);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kPerX + i]), _mm256_slli_epi32(_mm256_sub_epi32(zero, ey), 8));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kPerY + i]), _mm256_slli_epi32(ex, 8));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kLimit + i]), _mm256_mask_blend_epi32(owns, zero, _mm256_set1_epi32(-1)));
+  }
+  // Window positions and colours: a vertex a row, made a lane; then in double.
+  __m512d v[3][8];  // x, y, z, w, r, g, b, a
+  for (int c = 0; c < 3; ++c) {
+    __m256 r[8];
+    for (int lane = 0; lane < 8; ++lane) r[lane] = _mm256_load_ps(&vs.hot[corner[c][lane]].x);
+    transpose8(r);
+    for (int a = 0; a < 8; ++a) v[c][a] = _mm512_cvtps_pd(r[a]);
+  }
+  for (int a = 0; a < 8; ++a) {
+    const __m512d v1 = _mm512_mask_blend_pd(swap, v[1][a], v[2][a]);
+    v[2][a] = _mm512_mask_blend_pd(swap, v[2][a], v[1][a]), v[1][a] = v1;
+  }
+  // PlaneSolver, lane by lane.
+  const __m512d x0 = v[0][0], y0 = v[0][1];
+  const __m512d x1 = _mm512_sub_pd(v[1][0], x0), y1 = _mm512_sub_pd(v[1][1], y0);
+  const __m512d x2 = _mm512_sub_pd(v[2][0], x0), y2 = _mm512_sub_pd(v[2][1], y0);
+  const __m512d det = _mm512_sub_pd(_mm512_mul_pd(x1, y2), _mm512_mul_pd(x2, y1));
+  const __m512d one = _mm512_set1_pd(1);
+  const __m512d inv = _mm512_maskz_div_pd(_mm512_cmp_pd_mask(det, _mm512_setzero_pd(), _CMP_NEQ_UQ), one, det);
+  __m512d a[3][6];  // z, 1/w, r/w, g/w, b/w, a/w
+  for (int c = 0; c < 3; ++c) {
+    const __m512d iw = _mm512_div_pd(one, v[c][3]);
+    a[c][0] = v[c][2], a[c][1] = iw;
+    for (int k = 0; k < 4; ++k) a[c][2 + k] = _mm512_mul_pd(v[c][4 + k], iw);
+  }
+  const __m256 fzero = _mm256_setzero_ps();
+  __m256 probe = fzero;
+  for (int q = 0; q < 6; ++q) {
+    const __m512d d1 = _mm512_sub_pd(a[1][q], a[0][q]), d2 = _mm512_sub_pd(a[2][q], a[0][q]);
+    const __m512d p1 = _mm512_mul_pd(_mm512_sub_pd(_mm512_mul_pd(d1, y2), _mm512_mul_pd(d2, y1)), inv);
+    const __m512d p2 = _mm512_mul_pd(_mm512_sub_pd(_mm512_mul_pd(x1, d2), _mm512_mul_pd(x2, d1)), inv);
+    const __m512d p0 = _mm512_sub_pd(_mm512_sub_pd(a[0][q], _mm512_mul_pd(p1, x0)), _mm512_mul_pd(p2, y0));
+    const __m512d p[3] = {p0, p1, p2};
+    for (int m = 0; m < 3; ++m) {
+      if (q == 0) {
+        _mm512_store_pd(out.z[m], p[m]);
+        continue;
+      }
+      const __m256 f = _mm512_cvtpd_ps(p[m]);
+      probe = _mm256_add_ps(probe, _mm256_mul_ps(f, fzero));  // x * 0 is NaN unless x is finite
+      _mm256_store_ps(out.f[q == 1 ? m : 3 + 4 * m + (q - 2)], f);
+    }
+  }
+  out.ok = _mm256_cmp_ps_mask(probe, probe, _CMP_ORD_Q);
+}
+
+#pragma GCC pop_options
 
 // Sets up and draws, in this thread's bands, a triangle whose vertices are all mapped.
 template <detail::DepthMode D>
@@ -279,6 +403,46 @@ void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* 
   }
 }
 
+// The same, eight triangles set up at a time for the box kernel; those it cannot draw go as above.
+template <detail::DepthMode D>
+void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+  uint64_t nonfinite = 0;
+  for (int share = 0; share < shares; ++share) {
+    const uint32_t* list = in[share];
+    const size_t n = counts[share];
+    for (size_t e = 0; e < n; e += 8) {
+      const int lanes = int(std::min<size_t>(8, n - e));
+      for (size_t a = e + 8; a < std::min(e + 16, n); ++a)
+        for (size_t v : l.corners(list[a] & ~kClipped)) __builtin_prefetch(&l.vs.snapped[v]), __builtin_prefetch(&l.vs.hot[v]);
+      alignas(32) uint32_t corner[3][8];
+      unsigned clipped = 0;
+      for (int lane = 0; lane < 8; ++lane) {
+        const uint32_t entry = list[e + size_t(std::min(lane, lanes - 1))];
+        const std::array<size_t, 3> vi = l.corners(entry & ~kClipped);
+        for (int c = 0; c < 3; ++c) corner[c][lane] = uint32_t(vi[size_t(c)]);
+        clipped |= unsigned(entry >> 31) << lane;
+      }
+      Setup8 st;
+      setup8(l.vs, corner, l.fb.width, l.fb.height, st);
+      for (int lane = 0; lane < lanes; ++lane) {
+        const std::array<size_t, 3> vi = {corner[0][lane], corner[1][lane], corner[2][lane]};
+        if (clipped >> lane & 1) {
+          draw_clipped(l, vi, mine);
+        } else if (st.box >> lane & 1) {
+          const detail::BoxCoverage c = detail::box_coverage({&st.edges[0][lane], 8}, mine);
+          if (c.blocks && (st.ok >> lane & 1))
+            nonfinite += detail::box_shade<D>(l.fb, {&st.z[0][lane], &st.f[0][lane], 8}, st.edges[detail::kXmin][lane],
+                                              st.edges[detail::kYmin][lane], l.s.depth_func, c);
+        } else if (!(st.none >> lane & 1)) {
+          const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
+          draw_one<D>(l, vi, p, mine);
+        }
+      }
+    }
+  }
+  if (nonfinite) detail::g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+}
+
 }  // namespace
 
 namespace {
@@ -308,6 +472,14 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
     size_t n[kMaxThreads];
     for (int share = 0; share < threads; ++share)
       in[share] = bins.lists[size_t(share * threads + owner)].data(), n[share] = counts[share][owner];
+    if (detail::wide_kernels() && !s.flat && !s.add_secondary && !s.cull && !s.two_side) {
+      switch (detail::depth_mode(s)) {
+        case detail::kNoDepth: return draw_bins_wide<detail::kNoDepth>(l, mine, in, n, threads);
+        case detail::kLess: return draw_bins_wide<detail::kLess>(l, mine, in, n, threads);
+        case detail::kLequal: return draw_bins_wide<detail::kLequal>(l, mine, in, n, threads);
+        case detail::kAnyDepth: return draw_bins_wide<detail::kAnyDepth>(l, mine, in, n, threads);
+      }
+    }
     switch (detail::depth_mode(s)) {
       case detail::kNoDepth: return draw_bins<detail::kNoDepth>(l, mine, in, n, threads);
       case detail::kLess: return draw_bins<detail::kLess>(l, mine, in, n, threads);

@@ -1,26 +1,31 @@
 // The triangle-list path (GL_TRIANGLES from glDrawArrays, glDrawElements or immediate mode:
 // vertices lit in batches, triangles binned to the threads that own their rows) draws what the
 // general path draws (vertex by vertex, triangles set up and then rasterized), bit for bit,
-// whatever the state and the number of threads.
+// whatever the state and the number of threads; and with the box kernel and the eight-triangle
+// setup (raster/box.h) what the scalar row loop draws.
 #include <gtest/gtest.h>
 
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
+#include "raster/box.h"
 #include "scene/scene.h"
 #include "state/context.h"
 
 namespace ffc {
 namespace {
 
-image::Image draw(scene::Description d, scene::DrawPath path, int threads, bool triangle_lists = true) {
+image::Image draw(scene::Description d, scene::DrawPath path, int threads, bool triangle_lists = true, bool wide = true) {
   for (scene::Object& o : d.objects) o.draw = path;
+  raster::detail::set_wide_kernels(wide);
   auto soft = backends::make("soft");
   soft->begin(d.width, d.height);
   state::Context::current()->set_threads(threads);
   state::Context::current()->set_triangle_lists(triangle_lists);
   scene::draw(d);
-  return soft->read();
+  image::Image img = soft->read();
+  raster::detail::set_wide_kernels(true);
+  return img;
 }
 
 // Pixels that are not the background.
@@ -45,6 +50,7 @@ std::vector<Case> cases() {
   };
   std::vector<Case> out;
   out.push_back({"smooth", sphere(4)});
+  out.push_back({"smooth_depth_5", sphere(5)});  // boxes of about 4x4 pixels: the box kernel
   {
     scene::Description d = sphere(3);
     d.shade = scene::Shade::Flat;  // the provoking (third) vertex's colour
@@ -97,11 +103,12 @@ class TriangleList : public ::testing::TestWithParam<Case> {};
 
 TEST_P(TriangleList, DrawsWhatTheGeneralPathDraws) {
   const scene::Description& d = GetParam().d;
-  const image::Image general = draw(d, scene::DrawPath::Immediate, 1, false);
+  const image::Image general = draw(d, scene::DrawPath::Immediate, 1, false, false);
   EXPECT_GT(drawn_share(general), 0.005) << "a picture with something in it";
   for (int threads : {1, 2, 3})
     for (auto path : {scene::DrawPath::Elements, scene::DrawPath::Arrays, scene::DrawPath::Immediate})
       EXPECT_EQ(image::compare(general, draw(d, path, threads)).max_diff, 0) << threads << " " << scene::to_string(path);
+  EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Elements, 2, false)).max_diff, 0) << "general path, box kernel";
 }
 
 INSTANTIATE_TEST_SUITE_P(States, TriangleList, ::testing::ValuesIn(cases()),

@@ -1,0 +1,64 @@
+// Triangles whose box of pixel centres is at most 8x8 (nearly all of a subdivided sphere's), eight
+// pixels at a time (AVX-512VL on 256-bit vectors): the box is walked in blocks of 4x2 pixels (box
+// at most 4 wide) or 8x1, coverage first for the whole box, then depth and colour for the blocks
+// with a covered pixel, written through masks. No branch depends on a pixel. Each pixel gets the
+// bits the scalar row loop of span.h gives it: planes evaluated at its centre as (p0 + px X) + py Y.
+#pragma once
+#include <GL/gl.h>
+
+#include <cstdint>
+
+#include "raster/raster.h"
+
+namespace ffc::raster::detail {
+
+struct Bands;
+enum DepthMode : int;
+
+// Whether this kernel and the eight-triangle setup run: the CPU has AVX-512VL, and tests have not
+// turned them off (to hold them to the scalar code, bit for bit).
+extern bool g_wide_kernels;
+inline bool wide_kernels() { return g_wide_kernels; }
+void set_wide_kernels(bool on);
+
+// A triangle's inputs, read in place: field k at base[k * stride] (stride 1: one triangle's own
+// arrays; 8: one lane of eight triangles set up together).
+//
+// Edges, 16 int32 fields: the box (within the framebuffer, at most 8x8 pixel centres), then per
+// edge its function at the box's first pixel centre in 1/256 pixel, its steps per pixel in x and
+// y, and its limit: a centre is covered when every e > limit (-1 for an edge that owns the centres
+// exactly on it, 0 otherwise).
+enum BoxEdgeField { kXmin, kYmin, kXmax, kYmax, kE0, kPerX = kE0 + 3, kPerY = kPerX + 3, kLimit = kPerY + 3, kEdgeFields = kLimit + 3 };
+struct BoxEdges {
+  const int32_t* base;
+  int stride;
+  int32_t operator()(int field) const { return base[field * stride]; }
+};
+// Planes, value at pixel centre (X, Y) = (p0 + px X) + py Y: depth as 3 doubles (p0, px, py), then
+// 15 floats: 1/w's p0, px, py, then colour / w as p0 (r, g, b, a), px (r, g, b, a), py (r, g, b, a).
+constexpr int kPlaneFloats = 15;
+struct BoxPlanes {
+  const double* z;
+  const float* f;
+  int stride;
+};
+
+// The edge fields of a set-up triangle (counter-clockwise, box within the framebuffer and at most
+// 8x8, vertex extents below 31 pixels so that the edge functions fit in 32 bits).
+void box_edges(const Triangle& t, int32_t (&out)[kEdgeFields]);
+
+// The lanes covered in each block, and which blocks have any (bit b for block b).
+struct BoxCoverage {
+  uint16_t lanes[4];
+  unsigned blocks;
+  bool wide;  // 8x2 blocks (box wider than 4), else 4x4
+};
+
+// The covered centres in this thread's rows.
+BoxCoverage box_coverage(const BoxEdges& e, const Bands& bands);
+// Depth test and colour for the covered lanes; returns the number of drawn pixels whose colour
+// was not finite.
+template <DepthMode D>
+uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c);
+
+}  // namespace ffc::raster::detail
