@@ -1,5 +1,10 @@
 #include "raster/box.h"
 
+// GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
+// reports wherever they are inlined.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include <immintrin.h>
 
 #include "raster/span.h"
@@ -157,11 +162,12 @@ constexpr uint16_t kRowLanes8[4] = {0x0000, 0x00FF, 0xFF00, 0xFFFF};
 
 }  // namespace
 
-BoxCoverage box_coverage(const BoxEdges& t, const Bands& bands) {
+namespace {
+
+inline BoxCoverage coverage(const BoxEdges& t, const Bands& bands) {
   BoxCoverage c;
   const int xmin = t(kXmin), ymin = t(kYmin), ymax = t(kYmax), w = t(kXmax) - xmin + 1, h = ymax - ymin + 1;
   c.wide = w > 4;
-  const int rows_per_block = c.wide ? 2 : 4;
   // Rows of the box in this thread's bands (a box of 8 rows meets at most two bands).
   const int b0 = ymin / kBandRows, b1 = ymax / kBandRows;
   const int split = b0 == b1 ? h : (b0 + 1) * kBandRows - ymin;  // rows in the first band
@@ -169,25 +175,36 @@ BoxCoverage box_coverage(const BoxEdges& t, const Bands& bands) {
   const unsigned rows = (bands.owns(b0) ? first : 0) | (bands.owns(b1) ? all & ~first : 0);
   const unsigned cols = c.wide ? ((1u << w) - 1) * 0x0101 : ((1u << w) - 1) * 0x1111;
   const __m512i dx = lane_dx(c.wide), dy = lane_dy(c.wide);
-  __m512i e[3], step[3], limit[3];
-  for (int i = 0; i < 3; ++i) {
-    const __m512i per_y = _mm512_set1_epi32(t(kPerY + i));
-    e[i] = _mm512_add_epi32(_mm512_set1_epi32(t(kE0 + i)),
-                            _mm512_add_epi32(_mm512_mullo_epi32(_mm512_set1_epi32(t(kPerX + i)), dx), _mm512_mullo_epi32(per_y, dy)));
-    step[i] = _mm512_slli_epi32(per_y, c.wide ? 1 : 2);
-    limit[i] = _mm512_set1_epi32(t(kLimit + i));
-  }
+  auto at = [&](int i) {  // edge i's function at the lanes of the first block
+    return _mm512_add_epi32(_mm512_set1_epi32(t(kE0 + i)), _mm512_add_epi32(_mm512_mullo_epi32(_mm512_set1_epi32(t(kPerX + i)), dx),
+                                                                            _mm512_mullo_epi32(_mm512_set1_epi32(t(kPerY + i)), dy)));
+  };
+  const unsigned shift = c.wide ? 1 : 2;  // log2 of the rows per block
+  auto step = [&](int i) { return _mm512_set1_epi32(t(kPerY + i) << shift); };
+  __m512i e0 = at(0), e1 = at(1), e2 = at(2);
+  const __m512i s0 = step(0), s1 = step(1), s2 = step(2);
+  const __m512i l0 = _mm512_set1_epi32(t(kLimit)), l1 = _mm512_set1_epi32(t(kLimit + 1)), l2 = _mm512_set1_epi32(t(kLimit + 2));
   c.blocks = 0;
-  const int blocks = (h + rows_per_block - 1) / rows_per_block;
+  const int blocks = (h + (1 << shift) - 1) >> shift;
   for (int b = 0; b < blocks; ++b) {
     const unsigned box = cols & (c.wide ? kRowLanes8[rows >> (2 * b) & 3] : kRowLanes4[rows >> (4 * b) & 15]);
-    const unsigned lanes = _mm512_mask_cmpgt_epi32_mask(_mm512_mask_cmpgt_epi32_mask(_mm512_cmpgt_epi32_mask(e[0], limit[0]), e[1], limit[1]),
-                                                        e[2], limit[2]) & box;
+    const unsigned lanes = _mm512_mask_cmpgt_epi32_mask(_mm512_mask_cmpgt_epi32_mask(_mm512_cmpgt_epi32_mask(e0, l0), e1, l1), e2, l2) & box;
     c.lanes[b] = uint16_t(lanes);
     c.blocks |= unsigned(lanes != 0) << b;
-    for (int i = 0; i < 3; ++i) e[i] = _mm512_add_epi32(e[i], step[i]);
+    e0 = _mm512_add_epi32(e0, s0), e1 = _mm512_add_epi32(e1, s1), e2 = _mm512_add_epi32(e2, s2);
   }
   return c;
+}
+
+}  // namespace
+
+BoxCoverage box_coverage(const BoxEdges& t, const Bands& bands) { return coverage(t, bands); }
+
+template <DepthMode D>
+uint64_t box_draw(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func) {
+  const BoxCoverage c = coverage(e, bands);
+  if (!c.blocks) return 0;
+  return c.wide ? shade<D, true>(fb, p, e(kXmin), e(kYmin), depth_func, c) : shade<D, false>(fb, p, e(kXmin), e(kYmin), depth_func, c);
 }
 
 template <DepthMode D>
@@ -195,6 +212,10 @@ uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLen
   return c.wide ? shade<D, true>(fb, p, xmin, ymin, depth_func, c) : shade<D, false>(fb, p, xmin, ymin, depth_func, c);
 }
 
+template uint64_t box_draw<kNoDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
+template uint64_t box_draw<kLess>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
+template uint64_t box_draw<kLequal>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
+template uint64_t box_draw<kAnyDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
 template uint64_t box_shade<kNoDepth>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);
 template uint64_t box_shade<kLess>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);
 template uint64_t box_shade<kLequal>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);

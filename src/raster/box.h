@@ -61,4 +61,8 @@ BoxCoverage box_coverage(const BoxEdges& e, const Bands& bands);
 template <DepthMode D>
 uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c);
 
+// Both, for planes already known to be within float.
+template <DepthMode D>
+uint64_t box_draw(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func);
+
 }  // namespace ffc::raster::detail

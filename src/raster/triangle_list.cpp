@@ -1,5 +1,10 @@
 #include "raster/triangle_list.h"
 
+// GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
+// reports wherever they are inlined.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include "raster/span.h"
 
 #include <emmintrin.h>
@@ -429,10 +434,8 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
         if (clipped >> lane & 1) {
           draw_clipped(l, vi, mine);
         } else if (st.box >> lane & 1) {
-          const detail::BoxCoverage c = detail::box_coverage({&st.edges[0][lane], 8}, mine);
-          if (c.blocks && (st.ok >> lane & 1))
-            nonfinite += detail::box_shade<D>(l.fb, {&st.z[0][lane], &st.f[0][lane], 8}, st.edges[detail::kXmin][lane],
-                                              st.edges[detail::kYmin][lane], l.s.depth_func, c);
+          if (st.ok >> lane & 1)  // else not drawn, as smooth_planes decides
+            nonfinite += detail::box_draw<D>(l.fb, {&st.edges[0][lane], 8}, {&st.z[0][lane], &st.f[0][lane], 8}, mine, l.s.depth_func);
         } else if (!(st.none >> lane & 1)) {
           const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
           draw_one<D>(l, vi, p, mine);

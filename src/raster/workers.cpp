@@ -7,7 +7,7 @@
 namespace ffc::raster {
 
 Workers::Workers(int threads) {
-  for (int i = 1; i < std::min(threads, kMax); ++i) threads_.emplace_back([this, i] { loop(i); });
+  for (int i = 1; i < std::min(threads, kMax); ++i) threads_.emplace_back([this] { loop(); });
 }
 
 Workers::~Workers() {
@@ -22,34 +22,45 @@ Workers::~Workers() {
 
 void Workers::run_impl(void* fn, void (*call)(void*, int)) {
   if (threads_.empty()) return call(fn, 0);
+  uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     fn_ = fn, call_ = call;
-    pending_.store(int(threads_.size()));
-    generation_.fetch_add(1);
+    done_.store(0);
+    generation = (generation_.load() + 1) & 0xFFFFFFFF;
+    ticket_.store(generation << 32);
+    generation_.store(generation);
   }
   wake_.notify_all();
-  call(fn, 0);
+  take_shares(generation);
   // The shares are about equal: the others finish soon after this one, so spin rather than sleep.
-  while (pending_.load(std::memory_order_acquire) != 0) _mm_pause();
+  while (done_.load(std::memory_order_acquire) != size()) _mm_pause();
 }
 
-void Workers::loop(int share) {
+void Workers::take_shares(uint64_t generation) {
+  uint64_t t = ticket_.load(std::memory_order_acquire);
+  for (;;) {
+    const int share = int(t & 0xFFFFFFFF);
+    if (t >> 32 != generation || share >= size()) return;
+    if (!ticket_.compare_exchange_weak(t, t + 1, std::memory_order_acq_rel)) continue;
+    call_(fn_, share);
+    done_.fetch_add(1, std::memory_order_acq_rel);
+    t = ticket_.load(std::memory_order_acquire);
+  }
+}
+
+void Workers::loop() {
   uint64_t seen = 0;
   for (;;) {
     // A draw's phases follow each other within microseconds: spin a little before sleeping.
     for (int spin = 0; spin < 20000 && generation_.load(std::memory_order_acquire) == seen; ++spin) _mm_pause();
-    void* fn;
-    void (*call)(void*, int);
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return generation_.load() != seen; });
       seen = generation_.load();
       if (stop_) return;
-      fn = fn_, call = call_;
     }
-    call(fn, share);
-    pending_.fetch_sub(1, std::memory_order_acq_rel);
+    take_shares(seen);
   }
 }
 

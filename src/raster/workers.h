@@ -20,8 +20,9 @@ class Workers {
   Workers& operator=(const Workers&) = delete;
 
   int size() const { return int(threads_.size()) + 1; }
-  // Calls fn(share) for share in [0, size()), share 0 on the calling thread; returns when all
-  // have returned. Not reentrant.
+  // Calls fn(share) once for each share in [0, size()) and returns when all have returned. The
+  // threads take shares as they come: a thread the system runs late leaves its share to the
+  // others rather than holding up the draw. Not reentrant.
   template <typename F>
   void run(F&& fn) {
     run_impl(&fn, [](void* f, int share) { (*static_cast<std::remove_reference_t<F>*>(f))(share); });
@@ -29,13 +30,17 @@ class Workers {
 
  private:
   void run_impl(void* fn, void (*call)(void*, int));
-  void loop(int share);
+  void loop();
+  void take_shares(uint64_t generation);
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::atomic<uint64_t> generation_{0};
-  std::atomic<int> pending_{0};
+  // The run's generation (high 32 bits) and its next share (low 32): a thread woken for one run
+  // cannot take a share of the next.
+  std::atomic<uint64_t> ticket_{0};
+  std::atomic<int> done_{0};
   bool stop_ = false;
   void* fn_ = nullptr;
   void (*call_)(void*, int) = nullptr;

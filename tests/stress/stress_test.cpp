@@ -32,7 +32,9 @@ TEST(Catalogue, HasTheCasesTheIssueAsksFor) {
     EXPECT_FALSE(c.note.empty()) << c.name;
     EXPECT_FALSE(c.group.empty()) << c.name;
     EXPECT_TRUE(c.draw) << c.name;
-    if (c.mesa != stress::MesaExpectation::Agree) EXPECT_FALSE(c.mesa_reason.empty()) << c.name;
+    if (c.mesa != stress::MesaExpectation::Agree) {
+      EXPECT_FALSE(c.mesa_reason.empty()) << c.name;
+    }
   }
   for (const char* n : {"scale_1e-6_normalize", "scale_1e-6_rescale", "scale_1e6_rescale", "scale_1e-30_normalize",
                         "scale_0_z_normalize", "modelview_singular_rank2", "modelview_near_singular",
