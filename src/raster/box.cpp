@@ -63,9 +63,10 @@ __m512i load_rows(const int* at, size_t pitch, __mmask16 m) {
   if constexpr (Wide)
     return _mm512_inserti64x4(_mm512_castsi256_si512(_mm256_maskz_loadu_epi32(__mmask8(m), at)),
                               _mm256_maskz_loadu_epi32(__mmask8(m >> 8), at + pitch), 1);
-  __m512i v = _mm512_castsi128_si512(_mm_maskz_loadu_epi32(__mmask8(m & 15), at));
-  v = _mm512_inserti32x4(v, _mm_maskz_loadu_epi32(__mmask8(m >> 4 & 15), at + pitch), 1);
-  v = _mm512_inserti32x4(v, _mm_maskz_loadu_epi32(__mmask8(m >> 8 & 15), at + 2 * pitch), 2);
+  // A four-lane operation reads the low four bits of its mask.
+  __m512i v = _mm512_castsi128_si512(_mm_maskz_loadu_epi32(__mmask8(m), at));
+  v = _mm512_inserti32x4(v, _mm_maskz_loadu_epi32(__mmask8(m >> 4), at + pitch), 1);
+  v = _mm512_inserti32x4(v, _mm_maskz_loadu_epi32(__mmask8(m >> 8), at + 2 * pitch), 2);
   return _mm512_inserti32x4(v, _mm_maskz_loadu_epi32(__mmask8(m >> 12), at + 3 * pitch), 3);
 }
 template <bool Wide>
@@ -74,9 +75,9 @@ void store_rows(int* at, size_t pitch, __mmask16 m, __m512i v) {
     _mm256_mask_storeu_epi32(at, __mmask8(m), _mm512_castsi512_si256(v));
     _mm256_mask_storeu_epi32(at + pitch, __mmask8(m >> 8), _mm512_extracti64x4_epi64(v, 1));
   } else {
-    _mm_mask_storeu_epi32(at, __mmask8(m & 15), _mm512_castsi512_si128(v));
-    _mm_mask_storeu_epi32(at + pitch, __mmask8(m >> 4 & 15), _mm512_extracti32x4_epi32(v, 1));
-    _mm_mask_storeu_epi32(at + 2 * pitch, __mmask8(m >> 8 & 15), _mm512_extracti32x4_epi32(v, 2));
+    _mm_mask_storeu_epi32(at, __mmask8(m), _mm512_castsi512_si128(v));
+    _mm_mask_storeu_epi32(at + pitch, __mmask8(m >> 4), _mm512_extracti32x4_epi32(v, 1));
+    _mm_mask_storeu_epi32(at + 2 * pitch, __mmask8(m >> 8), _mm512_extracti32x4_epi32(v, 2));
     _mm_mask_storeu_epi32(at + 3 * pitch, __mmask8(m >> 12), _mm512_extracti32x4_epi32(v, 3));
   }
 }
@@ -84,14 +85,19 @@ void store_rows(int* at, size_t pitch, __mmask16 m, __m512i v) {
 template <DepthMode D, bool Wide>
 uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
   constexpr int kRows = Wide ? 2 : 4;  // per block
+  // Centres: X = x + 0.5 and Y = y + 0.5 exactly, as lane offsets added to the block's corner.
   const __m512i dy = lane_dy(Wide);
+  const __m512 fy_off = _mm512_add_ps(_mm512_cvtepi32_ps(dy), _mm512_set1_ps(0.5f));
+  const __m512d y_off_lo = centre_pd(_mm512_castsi512_si256(dy)), y_off_hi = centre_pd(_mm512_extracti64x4_epi64(dy, 1));
   // The parts of (p0 + px X) + py Y that depend on X only, once for the box.
   const int n = p.stride;
   const __m512i px = _mm512_add_epi32(_mm512_set1_epi32(xmin), lane_dx(Wide));
   const __m512 fx = _mm512_add_ps(_mm512_cvtepi32_ps(px), _mm512_set1_ps(0.5f));
-  const __m512d z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), z2 = _mm512_set1_pd(p.z[2 * n]);
+  const double z2s = p.z[2 * n];
+  const __m512d z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), z2 = _mm512_set1_pd(z2s);
+  // 8x2: both halves are the same eight columns.
   const __m512d zx_lo = _mm512_add_pd(z0, _mm512_mul_pd(z1, centre_pd(_mm512_castsi512_si256(px))));
-  const __m512d zx_hi = _mm512_add_pd(z0, _mm512_mul_pd(z1, centre_pd(_mm512_extracti64x4_epi64(px, 1))));
+  const __m512d zx_hi = Wide ? zx_lo : _mm512_add_pd(z0, _mm512_mul_pd(z1, centre_pd(_mm512_extracti64x4_epi64(px, 1))));
   const __m512 iwx = _mm512_add_ps(_mm512_set1_ps(p.f[0]), _mm512_mul_ps(_mm512_set1_ps(p.f[n]), fx));
   const __m512 iw2 = _mm512_set1_ps(p.f[2 * n]);
   __m512 cx[4], cy[4];
@@ -105,14 +111,19 @@ uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum d
   for (unsigned blocks = c.blocks; blocks; blocks &= blocks - 1) {
     const int b = __builtin_ctz(blocks);
     const int y = ymin + b * kRows;
-    const __m512i py = _mm512_add_epi32(_mm512_set1_epi32(y), dy);
     const size_t at = size_t(y) * pitch + size_t(xmin);
     const __mmask16 lanes = c.lanes[b];
     __mmask16 pass = lanes;
     if constexpr (D != kNoDepth) {
-      const __m512i z = _mm512_inserti64x4(
-          _mm512_castsi256_si512(depth24x8(_mm512_add_pd(zx_lo, _mm512_mul_pd(z2, centre_pd(_mm512_castsi512_si256(py)))))),
-          depth24x8(_mm512_add_pd(zx_hi, _mm512_mul_pd(z2, centre_pd(_mm512_extracti64x4_epi64(py, 1))))), 1);
+      __m512d zy_lo, zy_hi;  // py Y
+      if constexpr (Wide) {  // one row a half: py Y once for it
+        zy_lo = _mm512_set1_pd(z2s * (double(y) + 0.5)), zy_hi = _mm512_set1_pd(z2s * (double(y) + 1.5));
+      } else {
+        const __m512d row = _mm512_set1_pd(double(y));
+        zy_lo = _mm512_mul_pd(z2, _mm512_add_pd(row, y_off_lo)), zy_hi = _mm512_mul_pd(z2, _mm512_add_pd(row, y_off_hi));
+      }
+      const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(zx_lo, zy_lo))),
+                                           depth24x8(_mm512_add_pd(zx_hi, zy_hi)), 1);
       int* const zp = reinterpret_cast<int*>(fb.depth.data() + at);
       const __m512i stored = load_rows<Wide>(zp, pitch, lanes);
       // 24-bit values: the signed comparisons are the unsigned ones.
@@ -133,13 +144,13 @@ uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum d
       store_rows<Wide>(zp, pitch, pass, z);
       if (!pass) continue;  // hidden: no colour to compute (about a third of a sphere's blocks)
     }
-    const __m512 fy = _mm512_add_ps(_mm512_cvtepi32_ps(py), _mm512_set1_ps(0.5f));
+    const __m512 fy = _mm512_add_ps(_mm512_set1_ps(float(y)), fy_off);
     const __m512 inv = _mm512_div_ps(one, _mm512_add_ps(iwx, _mm512_mul_ps(iw2, fy)));
     __m512i rgba = _mm512_setzero_si512();
     __mmask16 bad = 0;
     for (int k = 0; k < 4; ++k) {
       const __m512 v = _mm512_mul_ps(_mm512_add_ps(cx[k], _mm512_mul_ps(cy[k], fy)), inv);
-      bad |= _mm512_cmp_ps_mask(_mm512_mul_ps(v, zero), zero, _CMP_UNORD_Q);  // v * 0: NaN unless finite
+      bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
       // Clamp (a NaN becomes 0), scale, round half to even (the default), into byte k.
       const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
       rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));

@@ -355,7 +355,7 @@ void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)
   detail::rasterize<D>(l.fb, t, s.depth_func, mine, planes);
 }
 
-// Binning: triangles [first, last), in order, each kept for the threads whose bands its box of
+// Binning: triangles [first, last), in order, each kept for the owners whose bands its box of
 // pixel centres meets (a clipped one for all). At high subdivision most triangles enclose no
 // pixel centre; they are dropped here, once, by whichever thread meets them.
 void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* const* lists, size_t* counts) {
@@ -453,46 +453,50 @@ namespace {
 void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
   const State& s = l.s;
   const size_t triangles = l.count;
-  const int threads = std::max(1, std::min({workers.size(), kMaxThreads, (l.fb.height + kBandRows - 1) / kBandRows}));
-  // bins.lists[share * threads + owner]: what binning share `share` kept for thread `owner`.
-  bins.lists.resize(size_t(threads * threads));
-  for (int share = 0; share < threads; ++share) {
-    const size_t n = triangles * size_t(share + 1) / size_t(threads) - triangles * size_t(share) / size_t(threads);
-    for (int o = 0; o < threads; ++o) bins.lists[size_t(share * threads + o)].resize(n);
+  // Units of work, taken by the units as they come: contiguous shares of the triangles to bin,
+  // then owners of bands (band b is owner b % units's) to draw. Four a thread even out the bands'
+  // unequal work.
+  const int bands = (l.fb.height + kBandRows - 1) / kBandRows;
+  const int units = workers.size() == 1 ? 1 : std::max(1, std::min({4 * workers.size(), kMaxThreads, bands}));
+  // bins.lists[share * units + owner]: what binning share `share` kept for owner `owner`.
+  bins.lists.resize(size_t(units * units));
+  for (int share = 0; share < units; ++share) {
+    const size_t n = triangles * size_t(share + 1) / size_t(units) - triangles * size_t(share) / size_t(units);
+    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n);
   }
   size_t counts[kMaxThreads][kMaxThreads] = {};
   auto bin = [&](int share) {
-    if (share >= threads) return;
+    if (share >= units) return;
     uint32_t* out[kMaxThreads];
-    for (int o = 0; o < threads; ++o) out[o] = bins.lists[size_t(share * threads + o)].data();
-    bin_share(l, triangles * size_t(share) / size_t(threads), triangles * size_t(share + 1) / size_t(threads),
-              threads, out, counts[share]);
+    for (int o = 0; o < units; ++o) out[o] = bins.lists[size_t(share * units + o)].data();
+    bin_share(l, triangles * size_t(share) / size_t(units), triangles * size_t(share + 1) / size_t(units),
+              units, out, counts[share]);
   };
   auto draw = [&](int owner) {
-    if (owner >= threads) return;
-    const detail::Bands mine(owner, threads);
+    if (owner >= units) return;
+    const detail::Bands mine(owner, units);
     const uint32_t* in[kMaxThreads];
     size_t n[kMaxThreads];
-    for (int share = 0; share < threads; ++share)
-      in[share] = bins.lists[size_t(share * threads + owner)].data(), n[share] = counts[share][owner];
+    for (int share = 0; share < units; ++share)
+      in[share] = bins.lists[size_t(share * units + owner)].data(), n[share] = counts[share][owner];
     if (detail::wide_kernels() && !s.flat && !s.add_secondary && !s.cull && !s.two_side) {
       switch (detail::depth_mode(s)) {
-        case detail::kNoDepth: return draw_bins_wide<detail::kNoDepth>(l, mine, in, n, threads);
-        case detail::kLess: return draw_bins_wide<detail::kLess>(l, mine, in, n, threads);
-        case detail::kLequal: return draw_bins_wide<detail::kLequal>(l, mine, in, n, threads);
-        case detail::kAnyDepth: return draw_bins_wide<detail::kAnyDepth>(l, mine, in, n, threads);
+        case detail::kNoDepth: return draw_bins_wide<detail::kNoDepth>(l, mine, in, n, units);
+        case detail::kLess: return draw_bins_wide<detail::kLess>(l, mine, in, n, units);
+        case detail::kLequal: return draw_bins_wide<detail::kLequal>(l, mine, in, n, units);
+        case detail::kAnyDepth: return draw_bins_wide<detail::kAnyDepth>(l, mine, in, n, units);
       }
     }
     switch (detail::depth_mode(s)) {
-      case detail::kNoDepth: return draw_bins<detail::kNoDepth>(l, mine, in, n, threads);
-      case detail::kLess: return draw_bins<detail::kLess>(l, mine, in, n, threads);
-      case detail::kLequal: return draw_bins<detail::kLequal>(l, mine, in, n, threads);
-      case detail::kAnyDepth: return draw_bins<detail::kAnyDepth>(l, mine, in, n, threads);
+      case detail::kNoDepth: return draw_bins<detail::kNoDepth>(l, mine, in, n, units);
+      case detail::kLess: return draw_bins<detail::kLess>(l, mine, in, n, units);
+      case detail::kLequal: return draw_bins<detail::kLequal>(l, mine, in, n, units);
+      case detail::kAnyDepth: return draw_bins<detail::kAnyDepth>(l, mine, in, n, units);
     }
   };
-  if (threads == 1) return bin(0), draw(0);
-  workers.run(bin);
-  workers.run(draw);
+  if (units == 1) return bin(0), draw(0);
+  workers.run(bin, units);
+  workers.run(draw, units);
 }
 
 }  // namespace

@@ -20,12 +20,15 @@ Workers::~Workers() {
   for (std::thread& t : threads_) t.join();
 }
 
-void Workers::run_impl(void* fn, void (*call)(void*, int)) {
-  if (threads_.empty()) return call(fn, 0);
+void Workers::run_impl(void* fn, void (*call)(void*, int), int shares) {
+  if (threads_.empty()) {
+    for (int share = 0; share < shares; ++share) call(fn, share);
+    return;
+  }
   uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    fn_ = fn, call_ = call;
+    fn_ = fn, call_ = call, shares_ = shares;
     done_.store(0);
     generation = (generation_.load() + 1) & 0xFFFFFFFF;
     ticket_.store(generation << 32);
@@ -34,14 +37,14 @@ void Workers::run_impl(void* fn, void (*call)(void*, int)) {
   wake_.notify_all();
   take_shares(generation);
   // The shares are about equal: the others finish soon after this one, so spin rather than sleep.
-  while (done_.load(std::memory_order_acquire) != size()) _mm_pause();
+  while (done_.load(std::memory_order_acquire) != shares) _mm_pause();
 }
 
 void Workers::take_shares(uint64_t generation) {
   uint64_t t = ticket_.load(std::memory_order_acquire);
   for (;;) {
     const int share = int(t & 0xFFFFFFFF);
-    if (t >> 32 != generation || share >= size()) return;
+    if (t >> 32 != generation || share >= shares_) return;
     if (!ticket_.compare_exchange_weak(t, t + 1, std::memory_order_acq_rel)) continue;
     call_(fn_, share);
     done_.fetch_add(1, std::memory_order_acq_rel);

@@ -20,16 +20,17 @@ class Workers {
   Workers& operator=(const Workers&) = delete;
 
   int size() const { return int(threads_.size()) + 1; }
-  // Calls fn(share) once for each share in [0, size()) and returns when all have returned. The
-  // threads take shares as they come: a thread the system runs late leaves its share to the
-  // others rather than holding up the draw. Not reentrant.
+  // Calls fn(share) once for each share in [0, shares) (default: one per thread) and returns when
+  // all have returned. The threads take shares as they come: a thread the system runs late leaves
+  // its share to the others rather than holding up the draw, and more shares than threads even
+  // out unequal ones. Not reentrant.
   template <typename F>
-  void run(F&& fn) {
-    run_impl(&fn, [](void* f, int share) { (*static_cast<std::remove_reference_t<F>*>(f))(share); });
+  void run(F&& fn, int shares = 0) {
+    run_impl(&fn, [](void* f, int share) { (*static_cast<std::remove_reference_t<F>*>(f))(share); }, shares > 0 ? shares : size());
   }
 
  private:
-  void run_impl(void* fn, void (*call)(void*, int));
+  void run_impl(void* fn, void (*call)(void*, int), int shares);
   void loop();
   void take_shares(uint64_t generation);
 
@@ -41,6 +42,7 @@ class Workers {
   // cannot take a share of the next.
   std::atomic<uint64_t> ticket_{0};
   std::atomic<int> done_{0};
+  int shares_ = 0;
   bool stop_ = false;
   void* fn_ = nullptr;
   void (*call_)(void*, int) = nullptr;
