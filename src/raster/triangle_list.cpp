@@ -356,21 +356,17 @@ void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)
 }
 
 // Binning: triangles [first, last), in order, each kept for the owners whose bands its box of
-// pixel centres meets (a clipped one for all). At high subdivision most triangles enclose no
-// pixel centre; they are dropped here, once, by whichever thread meets them.
-void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* const* lists, size_t* counts) {
+// pixel centres meets (a clipped one for all), appended at out[owner]. At high subdivision most
+// triangles enclose no pixel centre; they are dropped here, once, by whichever thread meets them.
+void bin_range(const List& l, size_t first, size_t last, int units, uint32_t** out) {
   const int fb_w = l.fb.width, fb_h = l.fb.height;
-  uint32_t* out[kMaxThreads];  // write pointers, kept in registers rather than counts in memory
-  for (int o = 0; o < threads; ++o) out[o] = lists[o];
-  uint8_t owner[detail::Bands::kMax + 1];  // band b's thread, b % threads without a division
-  for (int b = 0; b <= detail::Bands::kMax; ++b) owner[b] = uint8_t(b % threads);
   for (size_t tri = first; tri < last; ++tri) {
     if (l.idx && tri + kAhead < last)  // indexed vertices are scattered: ask for them early
       for (int k = 0; k < 3; ++k) __builtin_prefetch(&l.vs.snapped[l.idx[3 * (tri + kAhead) + k]]);
     const std::array<size_t, 3> vi = l.corners(tri);
     const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
     if (p[0].x == kNotMapped || p[1].x == kNotMapped || p[2].x == kNotMapped) {
-      for (int o = 0; o < threads; ++o) *out[o]++ = uint32_t(tri) | kClipped;
+      for (int o = 0; o < units; ++o) *out[o]++ = uint32_t(tri) | kClipped;
       continue;
     }
     const int32_t ylo = std::min({p[0].y, p[1].y, p[2].y}), yhi = std::max({p[0].y, p[1].y, p[2].y});
@@ -378,12 +374,88 @@ void bin_share(const List& l, size_t first, size_t last, int threads, uint32_t* 
     if (row_lo > row_hi) continue;
     const int32_t xlo = std::min({p[0].x, p[1].x, p[2].x}), xhi = std::max({p[0].x, p[1].x, p[2].x});
     if (std::max(0, (xlo - 128 + 255) >> 8) > std::min(fb_w - 1, (xhi - 128) >> 8)) continue;
-    const int band_lo = row_lo / kBandRows, band_hi = std::min(row_hi / kBandRows, band_lo + threads - 1);
-    for (int b = band_lo; b <= band_hi; ++b) {
-      *out[owner[b]]++ = uint32_t(tri);
+    const int band_lo = row_lo / kBandRows, band_hi = std::min(row_hi / kBandRows, band_lo + units - 1);
+    for (int b = band_lo; b <= band_hi; ++b) *out[b % units]++ = uint32_t(tri);
+  }
+}
+
+#pragma GCC push_options
+#pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
+
+// The same for sixteen triangles at a time, from `first` while sixteen remain; returns where it
+// stopped. Each owner's list takes a compressed store of sixteen: the lists have that much room
+// beyond their last element.
+size_t bin16(const List& l, size_t first, size_t last, int units, uint32_t** out) {
+  static_assert(kBandRows == 64, "bands by a shift");
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  const __m512i k127 = _mm512_set1_epi32(127), k128 = _mm512_set1_epi32(128), zero = _mm512_setzero_si512();
+  const __m512i last_col = _mm512_set1_epi32(l.fb.width - 1), last_row = _mm512_set1_epi32(l.fb.height - 1);
+  const __m512i not_mapped = _mm512_set1_epi32(kNotMapped), span = _mm512_set1_epi32(units - 1);
+  const __m512 per_unit = _mm512_set1_ps(1.0f / float(units));
+  // Corner k of lane i is index 3i + k of 48: from the first 32 by one permutation, the rest from
+  // the last 16 by a second.
+  __m512i from_ab[3], from_c[3];
+  __mmask16 past_32[3];
+  for (int k = 0; k < 3; ++k) {
+    const __m512i at = _mm512_add_epi32(_mm512_mullo_epi32(lane, _mm512_set1_epi32(3)), _mm512_set1_epi32(k));
+    from_ab[k] = at, from_c[k] = _mm512_sub_epi32(at, _mm512_set1_epi32(32));
+    past_32[k] = _mm512_cmpge_epi32_mask(at, _mm512_set1_epi32(32));
+  }
+  const __m512i evens = _mm512_add_epi32(lane, lane), odds = _mm512_add_epi32(evens, _mm512_set1_epi32(1));
+  const long long* snapped = reinterpret_cast<const long long*>(l.vs.snapped.data());
+  size_t tri = first;
+  for (; tri + 16 <= last; tri += 16) {
+    __m512i x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+      __m512i c;
+      if (l.idx) {
+        const uint32_t* p = l.idx + 3 * tri;
+        c = _mm512_permutex2var_epi32(_mm512_loadu_si512(p), from_ab[k], _mm512_loadu_si512(p + 16));
+        c = _mm512_mask_permutexvar_epi32(c, past_32[k], from_c[k], _mm512_loadu_si512(p + 32));
+      } else {
+        c = _mm512_add_epi32(_mm512_set1_epi32(int(3 * (l.base + tri)) + k), _mm512_mullo_epi32(lane, _mm512_set1_epi32(3)));
+      }
+      const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(c), snapped, 8);
+      const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(c, 1), snapped, 8);
+      x[k] = _mm512_permutex2var_epi32(lo, evens, hi), y[k] = _mm512_permutex2var_epi32(lo, odds, hi);
+    }
+    const __mmask16 clipped = _mm512_cmpeq_epi32_mask(x[0], not_mapped) | _mm512_cmpeq_epi32_mask(x[1], not_mapped) |
+                              _mm512_cmpeq_epi32_mask(x[2], not_mapped);
+    const __m512i ylo = _mm512_min_epi32(y[0], _mm512_min_epi32(y[1], y[2])), yhi = _mm512_max_epi32(y[0], _mm512_max_epi32(y[1], y[2]));
+    const __m512i xlo = _mm512_min_epi32(x[0], _mm512_min_epi32(x[1], x[2])), xhi = _mm512_max_epi32(x[0], _mm512_max_epi32(x[1], x[2]));
+    const __m512i row_lo = _mm512_max_epi32(zero, _mm512_srai_epi32(_mm512_add_epi32(ylo, k127), 8));
+    const __m512i row_hi = _mm512_min_epi32(last_row, _mm512_srai_epi32(_mm512_sub_epi32(yhi, k128), 8));
+    const __m512i col_lo = _mm512_max_epi32(zero, _mm512_srai_epi32(_mm512_add_epi32(xlo, k127), 8));
+    const __m512i col_hi = _mm512_min_epi32(last_col, _mm512_srai_epi32(_mm512_sub_epi32(xhi, k128), 8));
+    const __mmask16 keep = _mm512_cmple_epi32_mask(row_lo, row_hi) & _mm512_cmple_epi32_mask(col_lo, col_hi) & ~clipped;
+    const __m512i band_lo = _mm512_srai_epi32(row_lo, 6);
+    const __m512i bands = _mm512_min_epi32(_mm512_sub_epi32(_mm512_srai_epi32(row_hi, 6), band_lo), span);  // met, less one
+    // band_lo % units: the quotient of (band_lo + 0.5) / units is never near a whole number.
+    const __m512i q = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_add_ps(_mm512_cvtepi32_ps(band_lo), _mm512_set1_ps(0.5f)), per_unit));
+    const __m512i first_owner = _mm512_sub_epi32(band_lo, _mm512_mullo_epi32(q, _mm512_set1_epi32(units)));
+    const __m512i ids = _mm512_add_epi32(_mm512_set1_epi32(int(tri)), lane);
+    const __m512i marked = _mm512_mask_or_epi32(ids, clipped, ids, _mm512_set1_epi32(int(kClipped)));
+    for (int o = 0; o < units; ++o) {
+      // Owner o's distance past the first owner, around the units.
+      __m512i d = _mm512_sub_epi32(_mm512_set1_epi32(o), first_owner);
+      d = _mm512_mask_add_epi32(d, _mm512_cmplt_epi32_mask(d, zero), d, _mm512_set1_epi32(units));
+      const __mmask16 mine = clipped | (keep & _mm512_cmple_epi32_mask(d, bands));
+      _mm512_storeu_si512(out[o], _mm512_maskz_compress_epi32(mine, marked));
+      out[o] += __builtin_popcount(mine);
     }
   }
-  for (int o = 0; o < threads; ++o) counts[o] = size_t(out[o] - lists[o]);
+  return tri;
+}
+
+#pragma GCC pop_options
+
+void bin_share(const List& l, size_t first, size_t last, int units, uint32_t* const* lists, size_t* counts) {
+  uint32_t* out[kMaxThreads];  // write pointers, kept in registers rather than counts in memory
+  for (int o = 0; o < units; ++o) out[o] = lists[o];
+  if (detail::wide_kernels() && l.vs.snapped.size() <= size_t(INT32_MAX))  // gathers take signed 32-bit indices
+    first = bin16(l, first, last, units, out);
+  bin_range(l, first, last, units, out);
+  for (int o = 0; o < units; ++o) counts[o] = size_t(out[o] - lists[o]);
 }
 
 // Rasterization: what every binning share kept for this thread, in primitive order.
@@ -462,7 +534,7 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
   bins.lists.resize(size_t(units * units));
   for (int share = 0; share < units; ++share) {
     const size_t n = triangles * size_t(share + 1) / size_t(units) - triangles * size_t(share) / size_t(units);
-    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n);
+    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n + 16);  // + bin16's last store
   }
   size_t counts[kMaxThreads][kMaxThreads] = {};
   auto bin = [&](int share) {

@@ -128,10 +128,9 @@ void Context::shade_range(GLint first, GLint count) {
     work(first, first + count, &zero[0]);
   } else {
     raster::Workers& w = workers();
-    const int shares = std::min(w.size(), 8);
-    w.run([&](int s) {
-      if (s < shares) work(first + GLint(int64_t(count) * s / shares), first + GLint(int64_t(count) * (s + 1) / shares), &zero[s]);
-    });
+    const int shares = std::min(4 * w.size(), 8);  // more than threads: a late thread's share is taken
+    w.run([&](int s) { work(first + GLint(int64_t(count) * s / shares), first + GLint(int64_t(count) * (s + 1) / shares), &zero[s]); },
+          shares);
   }
   if (std::find(std::begin(zero), std::end(zero), true) != std::end(zero)) deviations_.insert(kZeroNormal);
   // The current normal and colour end as the last element sets them, as one by one.
@@ -149,10 +148,11 @@ void Context::shade_range(GLint first, GLint count) {
 void Context::read_top_down(uint8_t* out) {
   const size_t row = size_t(fb_.width) * 4;
   raster::Workers& w = workers();
+  const int shares = 4 * w.size();
   w.run([&](int share) {
-    for (int y = fb_.height * share / w.size(); y < fb_.height * (share + 1) / w.size(); ++y)  // GL's row 0 is the bottom one
+    for (int y = fb_.height * share / shares; y < fb_.height * (share + 1) / shares; ++y)  // GL's row 0 is the bottom one
       std::memcpy(out + size_t(y) * row, &fb_.color[size_t(fb_.height - 1 - y) * row], row);
-  });
+  }, shares);
 }
 
 void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
