@@ -223,6 +223,68 @@ uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLen
   return c.wide ? shade<D, true>(fb, p, xmin, ymin, depth_func, c) : shade<D, false>(fb, p, xmin, ymin, depth_func, c);
 }
 
+template <DepthMode D>
+uint64_t span_shade(Framebuffer& fb, const BoxPlanes& p, int y, int lo, int hi, GLenum depth_func) {
+  const int n = p.stride;
+  const double row = double(y) + 0.5;
+  const float frow = float(row);
+  // Per pixel (p0 + px X) + py Y, py Y once for the row.
+  const __m512d z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), zy = _mm512_set1_pd(p.z[2 * n] * row);
+  const __m512 iw0 = _mm512_set1_ps(p.f[0]), iw1 = _mm512_set1_ps(p.f[n]), iwy = _mm512_set1_ps(p.f[2 * n] * frow);
+  __m512 c0[4], cx[4], cy[4];
+  for (int k = 0; k < 4; ++k)
+    c0[k] = _mm512_set1_ps(p.f[(3 + k) * n]), cx[k] = _mm512_set1_ps(p.f[(7 + k) * n]), cy[k] = _mm512_set1_ps(p.f[(11 + k) * n] * frow);
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1), k255 = _mm512_set1_ps(255);
+  int* const zrow = reinterpret_cast<int*>(fb.depth.data() + size_t(y) * size_t(fb.width));
+  int* const crow = reinterpret_cast<int*>(fb.color.data()) + size_t(y) * size_t(fb.width);
+  uint64_t nonfinite = 0;
+  for (int x = lo; x <= hi; x += 16) {
+    const __mmask16 lanes = hi - x >= 15 ? __mmask16(0xFFFF) : __mmask16((1u << (hi - x + 1)) - 1);
+    const __m512i px = _mm512_add_epi32(_mm512_set1_epi32(x), lane);
+    __mmask16 pass = lanes;
+    if constexpr (D != kNoDepth) {
+      const __m512d x_lo = centre_pd(_mm512_castsi512_si256(px)), x_hi = centre_pd(_mm512_extracti64x4_epi64(px, 1));
+      const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(_mm512_add_pd(z0, _mm512_mul_pd(z1, x_lo)), zy))),
+                                           depth24x8(_mm512_add_pd(_mm512_add_pd(z0, _mm512_mul_pd(z1, x_hi)), zy)), 1);
+      const __m512i stored = _mm512_maskz_loadu_epi32(lanes, zrow + x);
+      if constexpr (D == kLess) pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
+      else if constexpr (D == kLequal) pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored);
+      else {
+        switch (depth_func) {
+          case GL_NEVER: pass = 0; break;
+          case GL_LESS: pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored); break;
+          case GL_EQUAL: pass = _mm512_mask_cmpeq_epi32_mask(lanes, z, stored); break;
+          case GL_LEQUAL: pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored); break;
+          case GL_GREATER: pass = _mm512_mask_cmpgt_epi32_mask(lanes, z, stored); break;
+          case GL_NOTEQUAL: pass = _mm512_mask_cmpneq_epi32_mask(lanes, z, stored); break;
+          case GL_GEQUAL: pass = _mm512_mask_cmpge_epi32_mask(lanes, z, stored); break;
+          default: break;
+        }
+      }
+      _mm512_mask_storeu_epi32(zrow + x, pass, z);
+      if (!pass) continue;
+    }
+    const __m512 fx = _mm512_add_ps(_mm512_cvtepi32_ps(px), _mm512_set1_ps(0.5f));
+    const __m512 inv = _mm512_div_ps(one, _mm512_add_ps(_mm512_add_ps(iw0, _mm512_mul_ps(iw1, fx)), iwy));
+    __m512i rgba = _mm512_setzero_si512();
+    __mmask16 bad = 0;
+    for (int k = 0; k < 4; ++k) {
+      const __m512 v = _mm512_mul_ps(_mm512_add_ps(_mm512_add_ps(c0[k], _mm512_mul_ps(cx[k], fx)), cy[k]), inv);
+      bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
+      const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
+      rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));
+    }
+    nonfinite += unsigned(__builtin_popcount(unsigned(bad & pass)));
+    _mm512_mask_storeu_epi32(crow + x, pass, rgba);
+  }
+  return nonfinite;
+}
+
+template uint64_t span_shade<kNoDepth>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
+template uint64_t span_shade<kLess>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
+template uint64_t span_shade<kLequal>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
+template uint64_t span_shade<kAnyDepth>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
 template uint64_t box_draw<kNoDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
 template uint64_t box_draw<kLess>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
 template uint64_t box_draw<kLequal>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);

@@ -65,4 +65,8 @@ uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLen
 template <DepthMode D>
 uint64_t box_draw(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func);
 
+// Pixels lo..hi of row y, sixteen at a time, the same bits: for the long spans of large triangles.
+template <DepthMode D>
+uint64_t span_shade(Framebuffer& fb, const BoxPlanes& p, int y, int lo, int hi, GLenum depth_func);
+
 }  // namespace ffc::raster::detail

@@ -166,6 +166,10 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!planes()) return false;
       ready = true;
     }
+    if (hi - lo >= 15 && wide_kernels()) {
+      nonfinite += span_shade<D>(fb, {t.z, t.inv_w, 1}, py, lo, hi, depth_func);
+      return true;
+    }
     const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_loadu_ps(t.cy);
     const double y = py + 0.5;
     const float fy = float(y);

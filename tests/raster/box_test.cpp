@@ -1,5 +1,6 @@
-// The box kernel (raster/box.h: boxes of at most 8x8 pixel centres, 16 pixels at a time) and the
-// eight-triangle setup of triangle lists draw what the scalar row loop draws, bit for bit: many
+// The box kernel (raster/box.h: boxes of at most 8x8 pixel centres, 16 pixels at a time), the span
+// kernel (long rows of large triangles) and the eight-triangle setup of triangle lists draw what
+// the scalar row loop draws, bit for bit: many
 // small triangles of random size, place, depth, 1/w and colour, under every depth function, with
 // 1 to 3 threads (rows in bands of 64), cut by the framebuffer's edges.
 #include <gtest/gtest.h>
@@ -41,7 +42,12 @@ Triangles random_triangles(int n, float size, unsigned seed) {
   return t;
 }
 
-image::Image draw(const Triangles& t, GLenum depth_func, int threads, bool wide, bool lists) {
+struct Drawn {
+  image::Image picture;
+  std::vector<uint32_t> depth;  // the depth buffer as drawn: rounding shows here before in colour
+};
+
+Drawn draw(const Triangles& t, GLenum depth_func, int threads, bool wide, bool lists) {
   raster::detail::set_wide_kernels(wide);
   auto soft = backends::make("soft");
   soft->begin(kWidth, kHeight);
@@ -58,9 +64,9 @@ image::Image draw(const Triangles& t, GLenum depth_func, int threads, bool wide,
   glVertexPointer(4, GL_FLOAT, 0, t.xyzw.data());
   glColorPointer(4, GL_FLOAT, 0, t.rgba.data());
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(t.xyzw.size() / 4));
-  image::Image img = soft->read();
+  Drawn out{soft->read(), state::Context::current()->framebuffer().depth};
   raster::detail::set_wide_kernels(true);
-  return img;
+  return out;
 }
 
 class BoxKernel : public ::testing::TestWithParam<GLenum> {
@@ -72,14 +78,17 @@ class BoxKernel : public ::testing::TestWithParam<GLenum> {
 
 TEST_P(BoxKernel, DrawsWhatTheScalarRowLoopDraws) {
   const GLenum func = GetParam();
-  // Sizes: mostly boxes of 4x4 and 8x2 blocks, some larger (the other loops), some slivers.
-  for (float size : {3.0f, 6.0f, 9.0f, 14.0f}) {
+  // Sizes: mostly boxes of 4x4 and 8x2 blocks, some larger (the other loops), some slivers; at 40
+  // pixels rows of 16 and more (the span kernel).
+  for (float size : {3.0f, 6.0f, 9.0f, 14.0f, 40.0f}) {
     const Triangles t = random_triangles(3000, size, unsigned(func) * 31 + unsigned(size));
-    const image::Image scalar = draw(t, func, 1, false, false);
-    for (int threads : {1, 2, 3}) {
-      EXPECT_EQ(image::compare(scalar, draw(t, func, threads, true, true)).max_diff, 0) << "lists, " << size << " px, " << threads;
-      EXPECT_EQ(image::compare(scalar, draw(t, func, threads, true, false)).max_diff, 0) << "general, " << size << " px, " << threads;
-    }
+    const Drawn scalar = draw(t, func, 1, false, false);
+    for (int threads : {1, 2, 3})
+      for (bool lists : {true, false}) {
+        const Drawn wide = draw(t, func, threads, true, lists);
+        EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << lists << ", " << size << " px, " << threads;
+        EXPECT_TRUE(scalar.depth == wide.depth) << lists << ", " << size << " px, " << threads;
+      }
   }
 }
 
@@ -88,7 +97,7 @@ TEST(BoxKernelDepth, EachFunctionGivesItsOwnPicture) {
   const Triangles t = random_triangles(3000, 6, 7);
   std::vector<image::Image> pictures;
   for (GLenum func : {GL_LESS, GL_LEQUAL, GL_GREATER, GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS})
-    pictures.push_back(draw(t, func, 2, true, true));
+    pictures.push_back(draw(t, func, 2, true, true).picture);
   for (size_t i = 0; i < pictures.size(); ++i)
     for (size_t j = i + 1; j < pictures.size(); ++j) {
       // LESS and LEQUAL (GREATER and GEQUAL, NOTEQUAL and ALWAYS) differ only where two depths
