@@ -3,7 +3,6 @@
 #pragma once
 #include <GL/gl.h>
 
-#include <emmintrin.h>
 
 #include <algorithm>
 #include <climits>
@@ -45,24 +44,8 @@ inline const uint8_t* element(const ClientArray& a, GLint i) {
   return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
 }
 
-// The smallest and largest of n indices (n > 0), four at a time in SSE2 (which compares signed:
-// the top bit is flipped first). A draw of a million indices reads them all before anything else.
-inline void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
-  const __m128i flip = _mm_set1_epi32(INT32_MIN);
-  __m128i vlo = _mm_set1_epi32(INT32_MAX), vhi = _mm_set1_epi32(INT32_MIN);
-  size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const __m128i v = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(u + i)), flip);
-    const __m128i less = _mm_cmplt_epi32(v, vlo), more = _mm_cmpgt_epi32(v, vhi);
-    vlo = _mm_or_si128(_mm_and_si128(less, v), _mm_andnot_si128(less, vlo));
-    vhi = _mm_or_si128(_mm_and_si128(more, v), _mm_andnot_si128(more, vhi));
-  }
-  alignas(16) uint32_t l[4], h[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(l), _mm_xor_si128(vlo, flip));
-  _mm_store_si128(reinterpret_cast<__m128i*>(h), _mm_xor_si128(vhi, flip));
-  lo = UINT32_MAX, hi = 0;
-  for (int k = 0; k < 4 && i >= 4; ++k) lo = std::min(lo, l[k]), hi = std::max(hi, h[k]);
-  for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
-}
+// The smallest and largest of n indices (n > 0): a draw of a million indices reads them all
+// before anything else (shaded_draw.cpp).
+void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi);
 
 }  // namespace ffc::state
