@@ -206,6 +206,8 @@ struct Setup8 {
   unsigned box;   // lanes for the box kernel: box at most 8x8, vertex extents below 31 pixels
   unsigned none;  // lanes that cover no pixel centre
   unsigned ok;    // lanes whose planes are within float (the others are not drawn)
+  unsigned tiny;  // box lanes of at most 2x2 pixel centres, their coverage below
+  alignas(32) int32_t cover[8];  // of a tiny lane: bits for (0,0) (1,0) (0,1) (1,1) from the box's corner
 };
 
 #pragma GCC push_options
@@ -262,6 +264,7 @@ void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, 
   _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kXmax]), xmax);
   _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kYmax]), ymax);
   const __m256i ox = _mm256_add_epi32(_mm256_slli_epi32(xmin, 8), k128), oy = _mm256_add_epi32(_mm256_slli_epi32(ymin, 8), k128);
+  __mmask8 corner_in[4] = {0xFF, 0xFF, 0xFF, 0xFF};
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     const __m256i ex = _mm256_sub_epi32(sx[k], sx[j]), ey = _mm256_sub_epi32(sy[k], sy[j]);
@@ -271,7 +274,21 @@ void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, 
     _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kPerX + i]), _mm256_slli_epi32(_mm256_sub_epi32(zero, ey), 8));
     _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kPerY + i]), _mm256_slli_epi32(ex, 8));
     _mm256_store_si256(reinterpret_cast<__m256i*>(out.edges[detail::kLimit + i]), _mm256_mask_blend_epi32(owns, zero, _mm256_set1_epi32(-1)));
+    // The box's four first centres, as box_coverage tests them (e > limit).
+    const __m256i lim = _mm256_mask_blend_epi32(owns, zero, _mm256_set1_epi32(-1));
+    const __m256i px = _mm256_slli_epi32(_mm256_sub_epi32(zero, ey), 8), py = _mm256_slli_epi32(ex, 8);
+    corner_in[0] &= _mm256_cmpgt_epi32_mask(e0, lim);
+    corner_in[1] &= _mm256_cmpgt_epi32_mask(_mm256_add_epi32(e0, px), lim);
+    corner_in[2] &= _mm256_cmpgt_epi32_mask(_mm256_add_epi32(e0, py), lim);
+    corner_in[3] &= _mm256_cmpgt_epi32_mask(_mm256_add_epi32(e0, _mm256_add_epi32(px, py)), lim);
   }
+  const __mmask8 one_col = _mm256_cmpeq_epi32_mask(xmin, xmax), one_row = _mm256_cmpeq_epi32_mask(ymin, ymax);
+  corner_in[1] &= ~one_col, corner_in[2] &= ~one_row, corner_in[3] &= ~(one_col | one_row);
+  __m256i cover = zero;
+  for (int k = 0; k < 4; ++k) cover = _mm256_mask_or_epi32(cover, corner_in[k], cover, _mm256_set1_epi32(1 << k));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(out.cover), cover);
+  const __m256i k1 = _mm256_set1_epi32(1);
+  out.tiny = out.box & _mm256_cmple_epi32_mask(_mm256_sub_epi32(xmax, xmin), k1) & _mm256_cmple_epi32_mask(_mm256_sub_epi32(ymax, ymin), k1);
   // Window positions and colours: a vertex a row, made a lane; then in double.
   __m512d v[3][8];  // x, y, z, w, r, g, b, a
   for (int c = 0; c < 3; ++c) {
@@ -505,6 +522,17 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
         const std::array<size_t, 3> vi = {corner[0][lane], corner[1][lane], corner[2][lane]};
         if (clipped >> lane & 1) {
           draw_clipped(l, vi, mine);
+        } else if (st.tiny >> lane & 1) {
+          // At most 2x2 centres, their coverage known: most such triangles at high subdivision
+          // cover none, and the others need no more than one 4x4 block.
+          const int ymin = st.edges[detail::kYmin][lane];
+          unsigned bits = unsigned(st.cover[lane]);
+          if (!mine.owns(ymin / kBandRows)) bits &= 0xC;
+          if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
+          if (!bits || !(st.ok >> lane & 1)) continue;
+          detail::BoxCoverage c{{uint16_t((bits & 3) | (bits & 0xC) << 2), 0, 0, 0}, 1, false};  // lanes 0, 1, 4, 5
+          nonfinite += detail::box_shade<D>(l.fb, {&st.z[0][lane], &st.f[0][lane], 8}, st.edges[detail::kXmin][lane], ymin,
+                                            l.s.depth_func, c);
         } else if (st.box >> lane & 1) {
           if (st.ok >> lane & 1)  // else not drawn, as smooth_planes decides
             nonfinite += detail::box_draw<D>(l.fb, {&st.edges[0][lane], 8}, {&st.z[0][lane], &st.f[0][lane], 8}, mine, l.s.depth_func);

@@ -25,12 +25,15 @@ struct Triangles {
 
 // n triangles, each within `size` pixels: its corners around a random centre (some beyond the
 // framebuffer's edges), depths and w (perspective: colour / w interpolated) random per corner.
-Triangles random_triangles(int n, float size, unsigned seed) {
+// across_bands: centres within two rows of a band's edge (rows 64 and 128), where two threads
+// share a triangle's rows.
+Triangles random_triangles(int n, float size, unsigned seed, bool across_bands = false) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0, 1);
   Triangles t;
   for (int i = 0; i < n; ++i) {
-    const float cx = -8 + u(rng) * (kWidth + 16), cy = -8 + u(rng) * (kHeight + 16), z = u(rng) * 1.8f - 0.9f;
+    const float cx = -8 + u(rng) * (kWidth + 16), z = u(rng) * 1.8f - 0.9f;
+    const float cy = across_bands ? (i % 2 ? 64 : 128) + 4 * (u(rng) - 0.5f) : -8 + u(rng) * (kHeight + 16);
     for (int k = 0; k < 3; ++k) {
       const float w = 0.5f + 2 * u(rng);
       const float x = cx + (u(rng) - 0.5f) * size, y = cy + (u(rng) - 0.5f) * size;
@@ -89,6 +92,22 @@ TEST_P(BoxKernel, DrawsWhatTheScalarRowLoopDraws) {
         EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << lists << ", " << size << " px, " << threads;
         EXPECT_TRUE(scalar.depth == wide.depth) << lists << ", " << size << " px, " << threads;
       }
+  }
+}
+
+// Triangles across the bands' edges: each thread draws its own rows of them, no more, no fewer.
+TEST(BoxKernelBands, TrianglesAcrossBandEdgesDrawEachRowOnce) {
+  if (!raster::detail::wide_kernels()) GTEST_SKIP() << "this CPU has no AVX-512VL: the kernel does not run";
+  for (float size : {2.0f, 3.0f, 6.0f}) {
+    const Triangles t = random_triangles(4000, size, 11 + unsigned(size), true);
+    for (GLenum func : {GL_LESS, GL_ALWAYS}) {
+      const Drawn scalar = draw(t, func, 1, false, false);
+      for (int threads : {2, 3}) {
+        const Drawn wide = draw(t, func, threads, true, true);
+        EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << size << " px, " << threads;
+        EXPECT_TRUE(scalar.depth == wide.depth) << size << " px, " << threads;
+      }
+    }
   }
 }
 
