@@ -211,7 +211,7 @@ struct Setup8 {
 };
 
 #pragma GCC push_options
-#pragma GCC target("avx2,avx512f,avx512vl")
+#pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
 
 // Rows of eight floats made columns.
 void transpose8(__m256 (&r)[8]) {
@@ -333,6 +333,23 @@ void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, 
     }
   }
   out.ok = _mm256_cmp_ps_mask(probe, probe, _CMP_ORD_Q);
+}
+
+// The corners of the list entries [0, lanes) (lanes past them repeat the last), built and stored
+// as whole vectors: setup8 loads them as vectors, which element-by-element stores would stall.
+// Returns the lanes to clip. Indices in 31 bits (see chunk_corners_fit).
+unsigned chunk_corners(const List& l, const uint32_t* entries, int lanes, uint32_t (&corner)[3][8]) {
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256i entry = _mm256_permutexvar_epi32(_mm256_min_epi32(lane, _mm256_set1_epi32(lanes - 1)),
+                                                 _mm256_loadu_si256(reinterpret_cast<const __m256i*>(entries)));
+  const __m256i tri = _mm256_and_si256(entry, _mm256_set1_epi32(int(~kClipped)));
+  const __m256i first = _mm256_add_epi32(tri, _mm256_add_epi32(tri, tri));  // 3 tri
+  for (int k = 0; k < 3; ++k) {
+    const __m256i c = l.idx ? _mm256_i32gather_epi32(reinterpret_cast<const int*>(l.idx + k), first, 4)
+                            : _mm256_add_epi32(first, _mm256_set1_epi32(int(3 * l.base) + k));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(corner[k]), c);
+  }
+  return _mm256_movepi32_mask(entry);
 }
 
 #pragma GCC pop_options
@@ -501,6 +518,9 @@ void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* 
 template <detail::DepthMode D>
 void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
   uint64_t nonfinite = 0;
+  // Corner numbers, and three times a triangle's, in 31 bits: vectors of them (the lists have room
+  // for a vector's load past their end).
+  const bool vector_corners = 3 * (l.base + l.count) < size_t(INT32_MAX) && l.vs.snapped.size() <= size_t(INT32_MAX);
   for (int share = 0; share < shares; ++share) {
     const uint32_t* list = in[share];
     const size_t n = counts[share];
@@ -510,11 +530,15 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
         for (size_t v : l.corners(list[a] & ~kClipped)) __builtin_prefetch(&l.vs.snapped[v]), __builtin_prefetch(&l.vs.hot[v]);
       alignas(32) uint32_t corner[3][8];
       unsigned clipped = 0;
-      for (int lane = 0; lane < 8; ++lane) {
-        const uint32_t entry = list[e + size_t(std::min(lane, lanes - 1))];
-        const std::array<size_t, 3> vi = l.corners(entry & ~kClipped);
-        for (int c = 0; c < 3; ++c) corner[c][lane] = uint32_t(vi[size_t(c)]);
-        clipped |= unsigned(entry >> 31) << lane;
+      if (vector_corners) {
+        clipped = chunk_corners(l, list + e, lanes, corner);
+      } else {
+        for (int lane = 0; lane < 8; ++lane) {
+          const uint32_t entry = list[e + size_t(std::min(lane, lanes - 1))];
+          const std::array<size_t, 3> vi = l.corners(entry & ~kClipped);
+          for (int c = 0; c < 3; ++c) corner[c][lane] = uint32_t(vi[size_t(c)]);
+          clipped |= unsigned(entry >> 31) << lane;
+        }
       }
       Setup8 st;
       setup8(l.vs, corner, l.fb.width, l.fb.height, st);
