@@ -9,7 +9,9 @@
 
 #include "raster/span.h"
 
+#include <algorithm>
 #include <array>
+#include <optional>
 #include <cstddef>
 
 namespace ffc::raster::detail {
@@ -223,64 +225,128 @@ uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLen
   return c.wide ? shade<D, true>(fb, p, xmin, ymin, depth_func, c) : shade<D, false>(fb, p, xmin, ymin, depth_func, c);
 }
 
+namespace {
+
+// A triangle's planes broadcast for rows of sixteen pixels; per row, py Y once.
+struct RowPlanes {
+  __m512d z0, z1;
+  __m512 iw0, iw1, c0[4], cx[4];
+  double z2;
+  float iw2, cy[4];
+  explicit RowPlanes(const BoxPlanes& p) {
+    const int n = p.stride;
+    z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), z2 = p.z[2 * n];
+    iw0 = _mm512_set1_ps(p.f[0]), iw1 = _mm512_set1_ps(p.f[n]), iw2 = p.f[2 * n];
+    for (int k = 0; k < 4; ++k)
+      c0[k] = _mm512_set1_ps(p.f[(3 + k) * n]), cx[k] = _mm512_set1_ps(p.f[(7 + k) * n]), cy[k] = p.f[(11 + k) * n];
+  }
+};
+struct Row {
+  __m512d zy;
+  __m512 iwy, cy[4];
+  int* zrow;
+  int* crow;
+  Row(const RowPlanes& p, Framebuffer& fb, int y) {
+    const double row = double(y) + 0.5;
+    const float frow = float(row);
+    zy = _mm512_set1_pd(p.z2 * row), iwy = _mm512_set1_ps(p.iw2 * frow);
+    for (int k = 0; k < 4; ++k) cy[k] = _mm512_set1_ps(p.cy[k] * frow);
+    zrow = reinterpret_cast<int*>(fb.depth.data() + size_t(y) * size_t(fb.width));
+    crow = reinterpret_cast<int*>(fb.color.data()) + size_t(y) * size_t(fb.width);
+  }
+};
+
+// Pixels x + k of a row for the lanes k set in `lanes`: depth test, colour, written through the
+// masks. Returns the drawn pixels whose colour was not finite.
+template <DepthMode D>
+uint64_t segment(const RowPlanes& p, const Row& r, int x, __mmask16 lanes, GLenum depth_func) {
+  const __m512i px = _mm512_add_epi32(_mm512_set1_epi32(x), _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  __mmask16 pass = lanes;
+  if constexpr (D != kNoDepth) {
+    const __m512d x_lo = centre_pd(_mm512_castsi512_si256(px)), x_hi = centre_pd(_mm512_extracti64x4_epi64(px, 1));
+    const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(_mm512_add_pd(p.z0, _mm512_mul_pd(p.z1, x_lo)), r.zy))),
+                                         depth24x8(_mm512_add_pd(_mm512_add_pd(p.z0, _mm512_mul_pd(p.z1, x_hi)), r.zy)), 1);
+    const __m512i stored = _mm512_maskz_loadu_epi32(lanes, r.zrow + x);
+    if constexpr (D == kLess) pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
+    else if constexpr (D == kLequal) pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored);
+    else {
+      switch (depth_func) {
+        case GL_NEVER: pass = 0; break;
+        case GL_LESS: pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored); break;
+        case GL_EQUAL: pass = _mm512_mask_cmpeq_epi32_mask(lanes, z, stored); break;
+        case GL_LEQUAL: pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored); break;
+        case GL_GREATER: pass = _mm512_mask_cmpgt_epi32_mask(lanes, z, stored); break;
+        case GL_NOTEQUAL: pass = _mm512_mask_cmpneq_epi32_mask(lanes, z, stored); break;
+        case GL_GEQUAL: pass = _mm512_mask_cmpge_epi32_mask(lanes, z, stored); break;
+        default: break;
+      }
+    }
+    _mm512_mask_storeu_epi32(r.zrow + x, pass, z);
+    if (!pass) return 0;
+  }
+  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1), k255 = _mm512_set1_ps(255);
+  const __m512 fx = _mm512_add_ps(_mm512_cvtepi32_ps(px), _mm512_set1_ps(0.5f));
+  const __m512 inv = _mm512_div_ps(one, _mm512_add_ps(_mm512_add_ps(p.iw0, _mm512_mul_ps(p.iw1, fx)), r.iwy));
+  __m512i rgba = _mm512_setzero_si512();
+  __mmask16 bad = 0;
+  for (int k = 0; k < 4; ++k) {
+    const __m512 v = _mm512_mul_ps(_mm512_add_ps(_mm512_add_ps(p.c0[k], _mm512_mul_ps(p.cx[k], fx)), r.cy[k]), inv);
+    bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
+    const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
+    rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));
+  }
+  _mm512_mask_storeu_epi32(r.crow + x, pass, rgba);
+  return unsigned(__builtin_popcount(unsigned(bad & pass)));
+}
+
+}  // namespace
+
 template <DepthMode D>
 uint64_t span_shade(Framebuffer& fb, const BoxPlanes& p, int y, int lo, int hi, GLenum depth_func) {
-  const int n = p.stride;
-  const double row = double(y) + 0.5;
-  const float frow = float(row);
-  // Per pixel (p0 + px X) + py Y, py Y once for the row.
-  const __m512d z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), zy = _mm512_set1_pd(p.z[2 * n] * row);
-  const __m512 iw0 = _mm512_set1_ps(p.f[0]), iw1 = _mm512_set1_ps(p.f[n]), iwy = _mm512_set1_ps(p.f[2 * n] * frow);
-  __m512 c0[4], cx[4], cy[4];
-  for (int k = 0; k < 4; ++k)
-    c0[k] = _mm512_set1_ps(p.f[(3 + k) * n]), cx[k] = _mm512_set1_ps(p.f[(7 + k) * n]), cy[k] = _mm512_set1_ps(p.f[(11 + k) * n] * frow);
-  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1), k255 = _mm512_set1_ps(255);
-  int* const zrow = reinterpret_cast<int*>(fb.depth.data() + size_t(y) * size_t(fb.width));
-  int* const crow = reinterpret_cast<int*>(fb.color.data()) + size_t(y) * size_t(fb.width);
+  const RowPlanes planes(p);
+  const Row row(planes, fb, y);
   uint64_t nonfinite = 0;
-  for (int x = lo; x <= hi; x += 16) {
-    const __mmask16 lanes = hi - x >= 15 ? __mmask16(0xFFFF) : __mmask16((1u << (hi - x + 1)) - 1);
-    const __m512i px = _mm512_add_epi32(_mm512_set1_epi32(x), lane);
-    __mmask16 pass = lanes;
-    if constexpr (D != kNoDepth) {
-      const __m512d x_lo = centre_pd(_mm512_castsi512_si256(px)), x_hi = centre_pd(_mm512_extracti64x4_epi64(px, 1));
-      const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(_mm512_add_pd(z0, _mm512_mul_pd(z1, x_lo)), zy))),
-                                           depth24x8(_mm512_add_pd(_mm512_add_pd(z0, _mm512_mul_pd(z1, x_hi)), zy)), 1);
-      const __m512i stored = _mm512_maskz_loadu_epi32(lanes, zrow + x);
-      if constexpr (D == kLess) pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
-      else if constexpr (D == kLequal) pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored);
-      else {
-        switch (depth_func) {
-          case GL_NEVER: pass = 0; break;
-          case GL_LESS: pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored); break;
-          case GL_EQUAL: pass = _mm512_mask_cmpeq_epi32_mask(lanes, z, stored); break;
-          case GL_LEQUAL: pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored); break;
-          case GL_GREATER: pass = _mm512_mask_cmpgt_epi32_mask(lanes, z, stored); break;
-          case GL_NOTEQUAL: pass = _mm512_mask_cmpneq_epi32_mask(lanes, z, stored); break;
-          case GL_GEQUAL: pass = _mm512_mask_cmpge_epi32_mask(lanes, z, stored); break;
-          default: break;
-        }
+  for (int x = lo; x <= hi; x += 16)
+    nonfinite += segment<D>(planes, row, x, hi - x >= 15 ? __mmask16(0xFFFF) : __mmask16((1u << (hi - x + 1)) - 1), depth_func);
+  return nonfinite;
+}
+
+template <DepthMode D>
+uint64_t rows_shade(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func) {
+  const RowPlanes planes(p);
+  const int xmin = e(kXmin), ymin = e(kYmin), xmax = e(kXmax), ymax = e(kYmax);
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  __m512i at_x[3], per_x16[3], limit[3];  // edge values at lanes x = xmin + k, row ymin
+  for (int i = 0; i < 3; ++i) {
+    at_x[i] = _mm512_add_epi32(_mm512_set1_epi32(e(kE0 + i)), _mm512_mullo_epi32(_mm512_set1_epi32(e(kPerX + i)), lane));
+    per_x16[i] = _mm512_set1_epi32(e(kPerX + i) * 16);
+    limit[i] = _mm512_set1_epi32(e(kLimit + i));
+  }
+  uint64_t nonfinite = 0;
+  for (int by = bands.next[size_t(ymin / kBandRows)]; by * kBandRows <= ymax; by += bands.count) {
+    const int row_end = std::min(by * kBandRows + kBandRows - 1, ymax);
+    for (int y = std::max(by * kBandRows, ymin); y <= row_end; ++y) {
+      std::optional<Row> row;
+      __m512i v[3];
+      for (int i = 0; i < 3; ++i) v[i] = _mm512_add_epi32(at_x[i], _mm512_set1_epi32(e(kPerY + i) * (y - ymin)));
+      for (int x = xmin; x <= xmax; x += 16) {
+        __mmask16 in = _mm512_mask_cmpgt_epi32_mask(_mm512_mask_cmpgt_epi32_mask(_mm512_cmpgt_epi32_mask(v[0], limit[0]), v[1], limit[1]),
+                                                    v[2], limit[2]);
+        if (xmax - x < 15) in &= __mmask16((1u << (xmax - x + 1)) - 1);
+        for (int i = 0; i < 3; ++i) v[i] = _mm512_add_epi32(v[i], per_x16[i]);
+        if (!in) continue;
+        if (!row) row.emplace(planes, fb, y);
+        nonfinite += segment<D>(planes, *row, x, in, depth_func);
       }
-      _mm512_mask_storeu_epi32(zrow + x, pass, z);
-      if (!pass) continue;
     }
-    const __m512 fx = _mm512_add_ps(_mm512_cvtepi32_ps(px), _mm512_set1_ps(0.5f));
-    const __m512 inv = _mm512_div_ps(one, _mm512_add_ps(_mm512_add_ps(iw0, _mm512_mul_ps(iw1, fx)), iwy));
-    __m512i rgba = _mm512_setzero_si512();
-    __mmask16 bad = 0;
-    for (int k = 0; k < 4; ++k) {
-      const __m512 v = _mm512_mul_ps(_mm512_add_ps(_mm512_add_ps(c0[k], _mm512_mul_ps(cx[k], fx)), cy[k]), inv);
-      bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
-      const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
-      rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));
-    }
-    nonfinite += unsigned(__builtin_popcount(unsigned(bad & pass)));
-    _mm512_mask_storeu_epi32(crow + x, pass, rgba);
   }
   return nonfinite;
 }
 
+template uint64_t rows_shade<kNoDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
+template uint64_t rows_shade<kLess>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
+template uint64_t rows_shade<kLequal>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
+template uint64_t rows_shade<kAnyDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
 template uint64_t span_shade<kNoDepth>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
 template uint64_t span_shade<kLess>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
 template uint64_t span_shade<kLequal>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);

@@ -69,4 +69,9 @@ uint64_t box_draw(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const 
 template <DepthMode D>
 uint64_t span_shade(Framebuffer& fb, const BoxPlanes& p, int y, int lo, int hi, GLenum depth_func);
 
+// A triangle with vertex extents below 31 pixels (edge functions in 32 bits) and any box, in rows
+// of sixteen pixels, its planes broadcast once: rows of this thread's bands.
+template <DepthMode D>
+uint64_t rows_shade(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func);
+
 }  // namespace ffc::raster::detail

@@ -166,7 +166,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!planes()) return false;
       ready = true;
     }
-    if (hi - lo >= 15 && wide_kernels()) {
+    if (hi - lo >= 15 && wide_kernels()) {  // the long rows of large triangles
       nonfinite += span_shade<D>(fb, {t.z, t.inv_w, 1}, py, lo, hi, depth_func);
       return true;
     }
@@ -229,6 +229,10 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
     box_edges(t, edges);
     const BoxCoverage c = box_coverage({edges, 1}, bands);
     if (c.blocks && planes()) nonfinite = box_shade<D>(fb, {t.z, t.inv_w, 1}, t.xmin, t.ymin, depth_func, c);
+  } else if (ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
+    int32_t edges[kEdgeFields];
+    box_edges(t, edges);
+    if (planes()) nonfinite = rows_shade<D>(fb, {edges, 1}, {t.z, t.inv_w, 1}, bands, depth_func);
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
     // Small (most triangles): edge functions relative to the box's first pixel centre fit in 32
     // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.
