@@ -256,20 +256,21 @@ void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, co
   }
 }
 
-void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& cc, double cd, Workers& workers) {
-  const uint8_t c[4] = {to_unorm8(cc.r), to_unorm8(cc.g), to_unorm8(cc.b), to_unorm8(cc.a)};
-  const uint32_t z = uint32_t(std::clamp(cd, 0.0, 1.0) * 0xFFFFFF + 0.5);
-  const int bands = (fb.height + kBandRows - 1) / kBandRows;
-  workers.run([&](int b) {  // a band a share
-    const size_t first = size_t(b) * kBandRows * fb.width;
-    const size_t n = size_t(std::min(kBandRows, fb.height - b * kBandRows)) * fb.width;
-    if (color) {  // one pixel, then the filled part copied onto what follows it, doubling
-      uint8_t* p = &fb.color[first * 4];
-      std::memcpy(p, c, 4);
-      for (size_t done = 4; done < n * 4; done *= 2) std::memcpy(p + done, p, std::min(done, n * 4 - done));
-    }
-    if (depth) std::fill_n(&fb.depth[first], n, z);
-  }, bands);
+void clear_band(Framebuffer& fb, const ClearRequest& c, int b) {
+  const size_t first = size_t(b) * kBandRows * fb.width;
+  const size_t n = size_t(std::min(kBandRows, fb.height - b * kBandRows)) * fb.width;
+  if (c.color) {  // one pixel, then the filled part copied onto what follows it, doubling
+    const glm::vec4& cc = c.clear_color;
+    const uint8_t v[4] = {to_unorm8(cc.r), to_unorm8(cc.g), to_unorm8(cc.b), to_unorm8(cc.a)};
+    uint8_t* p = &fb.color[first * 4];
+    std::memcpy(p, v, 4);
+    for (size_t done = 4; done < n * 4; done *= 2) std::memcpy(p + done, p, std::min(done, n * 4 - done));
+  }
+  if (c.depth) std::fill_n(&fb.depth[first], n, uint32_t(std::clamp(c.clear_depth, 0.0, 1.0) * 0xFFFFFF + 0.5));
+}
+
+void clear(Framebuffer& fb, const ClearRequest& c, Workers& workers) {
+  workers.run([&](int b) { clear_band(fb, c, b); }, (fb.height + kBandRows - 1) / kBandRows);  // a band a share
 }
 
 }  // namespace ffc::raster

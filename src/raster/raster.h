@@ -143,7 +143,16 @@ void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, 
                     Workers& workers);  // the `count` lists one after the other
 
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
-void clear(Framebuffer& fb, bool color, bool depth, const glm::vec4& clear_color, double clear_depth, Workers& workers);
+// glClear's request: which buffers, to what. A context keeps it until something reads or draws:
+// the triangle-list path has each thread clear the bands it is about to draw.
+struct ClearRequest {
+  bool color = false, depth = false;
+  glm::vec4 clear_color{0};
+  double clear_depth = 1;
+  bool pending() const { return color || depth; }
+};
+void clear(Framebuffer& fb, const ClearRequest& c, Workers& workers);
+void clear_band(Framebuffer& fb, const ClearRequest& c, int band);  // rows [64 band, 64 band + 64)
 
 // Fragments written from a non-finite colour (a NaN or an infinity in any channel before the
 // clamp), counted process-wide for the stress suite: reset, draw, read.

@@ -574,7 +574,7 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
 
 namespace {
 
-void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
+void draw_part(const List& l, Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
   const State& s = l.s;
   const size_t triangles = l.count;
   // Units of work, one a thread, taken by the threads as they come: contiguous shares of the
@@ -600,6 +600,8 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
   auto draw = [&](int owner) {
     if (owner >= units) return;
     const detail::Bands mine(owner, units);
+    if (clear.pending())  // this thread's bands, into its cache just before it draws them
+      for (int b = owner; b < bands; b += units) clear_band(l.fb, clear, b);
     const uint32_t* in[kMaxThreads];
     size_t n[kMaxThreads];
     for (int share = 0; share < units; ++share)
@@ -627,10 +629,12 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins) {
 }  // namespace
 
 void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
-                        size_t triangles, Workers& workers, TriangleBins& bins) {
+                        size_t triangles, Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
+  if (triangles == 0 && clear.pending()) raster::clear(fb, clear, workers);
   constexpr size_t kPart = size_t(1) << 30;  // binned triangle numbers have 31 bits
   for (size_t done = 0; done < triangles; done += kPart)
-    draw_part({fb, s, vs, idx ? idx + 3 * done : nullptr, std::min(kPart, triangles - done), idx ? 0 : done}, workers, bins);
+    draw_part({fb, s, vs, idx ? idx + 3 * done : nullptr, std::min(kPart, triangles - done), idx ? 0 : done}, workers, bins,
+              done == 0 ? clear : ClearRequest{});
 }
 
 }  // namespace ffc::raster

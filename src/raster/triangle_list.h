@@ -55,7 +55,8 @@ struct TriangleBins {
 // the others for the threads whose bands they meet), then drawing (each thread sets up and draws
 // what was kept for it, in primitive order). Triangles that need clipping take clip_and_map. Not
 // for feedback, and s.float_window must be set.
+// `clear`, when pending, is done first: each thread clears the bands it draws, just before.
 void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
-                        size_t triangles, Workers& workers, TriangleBins& bins);
+                        size_t triangles, Workers& workers, TriangleBins& bins, const ClearRequest& clear = {});
 
 }  // namespace ffc::raster

@@ -624,7 +624,15 @@ void Context::Clear(GLbitfield mask) {
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
   if (render_mode_ != GL_RENDER) return;
-  raster::clear(fb_, mask & GL_COLOR_BUFFER_BIT, mask & GL_DEPTH_BUFFER_BIT, clear_color_, clear_depth_, workers());
+  raster::ClearRequest& c = pending_clear_;  // a later clear of the same buffer replaces an earlier one
+  if (mask & GL_COLOR_BUFFER_BIT) c.color = true, c.clear_color = clear_color_;
+  if (mask & GL_DEPTH_BUFFER_BIT) c.depth = true, c.clear_depth = clear_depth_;
+}
+
+void Context::flush_clear() {
+  if (!pending_clear_.pending()) return;
+  raster::clear(fb_, pending_clear_, workers());
+  pending_clear_ = {};
 }
 
 void Context::LineWidth(float w) {
@@ -1108,8 +1116,10 @@ void Context::flush_primitive() {
     if (is_point) {
       raster::WindowVertex right = w[0];
       right.pos.x += 1;
+      flush_clear();
       raster::draw_line(fb_, w[0], right, rs);
     } else {
+      flush_clear();
       raster::draw_line(fb_, w[0], w[1], rs);
     }
   };
@@ -1144,6 +1154,7 @@ void Context::flush_primitive() {
         });
         const std::vector<raster::Triangle>* lists[raster::Workers::kMax] = {&tris};
         for (size_t p = 1; p < parts; ++p) lists[p] = &tri_parts_[p - 1];
+        flush_clear();
         raster::draw_triangles(fb_, lists, parts, rs, w);
         verts_.clear();
         return;
@@ -1175,7 +1186,10 @@ void Context::flush_primitive() {
       break;
   }
   const std::vector<raster::Triangle>* list = &tris;
-  if (!tris.empty()) raster::draw_triangles(fb_, &list, 1, rs, workers());
+  if (!tris.empty()) {
+    flush_clear();
+    raster::draw_triangles(fb_, &list, 1, rs, workers());
+  }
   verts_.clear();
 }
 
@@ -1234,6 +1248,7 @@ void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, 
   if (!outside_begin_end()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (format != GL_RGBA || type != GL_UNSIGNED_BYTE) return error(GL_INVALID_ENUM);
+  flush_clear();
   auto* out = static_cast<uint8_t*>(pixels);
   const size_t row = (size_t(w) * 4 + pack_alignment_ - 1) / pack_alignment_ * pack_alignment_;
   for (int j = 0; j < h; ++j)

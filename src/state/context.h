@@ -38,7 +38,10 @@ class Context {
  public:
   Context(int width, int height, Precision precision = Precision::Float);
 
-  raster::Framebuffer& framebuffer() { return fb_; }
+  raster::Framebuffer& framebuffer() {  // as drawn: a pending glClear done first
+    flush_clear();
+    return fb_;
+  }
   // The colour buffer, top row first (RGBA8), copied by the workers.
   void read_top_down(uint8_t* out);
   Precision precision() const { return precision_; }
@@ -159,6 +162,10 @@ class Context {
   void flush_primitive();
 
   raster::Framebuffer fb_;
+  // glClear waits here until something draws or reads: a triangle list clears band by band, on
+  // the threads that draw the bands; anything else calls flush_clear() first.
+  raster::ClearRequest pending_clear_;
+  void flush_clear();
   Precision precision_;
   GLenum error_ = GL_NO_ERROR;
 

@@ -247,6 +247,7 @@ void Context::shade_range(GLint first, GLint count) {
 }
 
 void Context::read_top_down(uint8_t* out) {
+  flush_clear();
   const size_t row = size_t(fb_.width) * 4;
   raster::Workers& w = workers();
   const int shares = 4 * w.size();
@@ -257,7 +258,8 @@ void Context::read_top_down(uint8_t* out) {
 }
 
 void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
-  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers(), bins_);
+  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers(), bins_, pending_clear_);
+  pending_clear_ = {};
 }
 
 }  // namespace ffc::state
