@@ -84,6 +84,41 @@ void store_rows(int* at, size_t pitch, __mmask16 m, __m512i v) {
   }
 }
 
+// The lanes of `lanes` whose depth z passes against the stored one (24-bit values: the signed
+// comparisons are the unsigned ones).
+template <DepthMode D>
+__mmask16 depth_test(__mmask16 lanes, __m512i z, __m512i stored, GLenum depth_func) {
+  if constexpr (D == kNoDepth) return lanes;
+  if constexpr (D == kLess) return _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
+  if constexpr (D == kLequal) return _mm512_mask_cmple_epi32_mask(lanes, z, stored);
+  switch (depth_func) {
+    case GL_NEVER: return 0;
+    case GL_LESS: return _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
+    case GL_EQUAL: return _mm512_mask_cmpeq_epi32_mask(lanes, z, stored);
+    case GL_LEQUAL: return _mm512_mask_cmple_epi32_mask(lanes, z, stored);
+    case GL_GREATER: return _mm512_mask_cmpgt_epi32_mask(lanes, z, stored);
+    case GL_NOTEQUAL: return _mm512_mask_cmpneq_epi32_mask(lanes, z, stored);
+    case GL_GEQUAL: return _mm512_mask_cmpge_epi32_mask(lanes, z, stored);
+    default: return lanes;
+  }
+}
+
+// Sixteen pixels' RGBA8 from colour / w and 1 / (1/w): multiplied, clamped (a NaN becomes 0),
+// scaled, rounded half to even (the default), a byte a channel. `bad`: lanes with a channel not
+// finite before the clamp.
+__m512i pack_rgba(const __m512 (&over_w)[4], __m512 inv, __mmask16& bad) {
+  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1), k255 = _mm512_set1_ps(255);
+  __m512i rgba = _mm512_setzero_si512();
+  bad = 0;
+  for (int k = 0; k < 4; ++k) {
+    const __m512 v = _mm512_mul_ps(over_w[k], inv);
+    bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
+    const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
+    rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));
+  }
+  return rgba;
+}
+
 template <DepthMode D, bool Wide>
 uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
   constexpr int kRows = Wide ? 2 : 4;  // per block
@@ -107,7 +142,6 @@ uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum d
     cx[k] = _mm512_add_ps(_mm512_set1_ps(p.f[(3 + k) * n]), _mm512_mul_ps(_mm512_set1_ps(p.f[(7 + k) * n]), fx));
     cy[k] = _mm512_set1_ps(p.f[(11 + k) * n]);
   }
-  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1), k255 = _mm512_set1_ps(255);
   const size_t pitch = size_t(fb.width);
   uint64_t nonfinite = 0;
   for (unsigned blocks = c.blocks; blocks; blocks &= blocks - 1) {
@@ -128,35 +162,16 @@ uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum d
                                            depth24x8(_mm512_add_pd(zx_hi, zy_hi)), 1);
       int* const zp = reinterpret_cast<int*>(fb.depth.data() + at);
       const __m512i stored = load_rows<Wide>(zp, pitch, lanes);
-      // 24-bit values: the signed comparisons are the unsigned ones.
-      if constexpr (D == kLess) pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
-      else if constexpr (D == kLequal) pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored);
-      else {
-        switch (depth_func) {
-          case GL_NEVER: pass = 0; break;
-          case GL_LESS: pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored); break;
-          case GL_EQUAL: pass = _mm512_mask_cmpeq_epi32_mask(lanes, z, stored); break;
-          case GL_LEQUAL: pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored); break;
-          case GL_GREATER: pass = _mm512_mask_cmpgt_epi32_mask(lanes, z, stored); break;
-          case GL_NOTEQUAL: pass = _mm512_mask_cmpneq_epi32_mask(lanes, z, stored); break;
-          case GL_GEQUAL: pass = _mm512_mask_cmpge_epi32_mask(lanes, z, stored); break;
-          default: break;
-        }
-      }
+      pass = depth_test<D>(lanes, z, stored, depth_func);
       store_rows<Wide>(zp, pitch, pass, z);
       if (!pass) continue;  // hidden: no colour to compute (about a third of a sphere's blocks)
     }
     const __m512 fy = _mm512_add_ps(_mm512_set1_ps(float(y)), fy_off);
-    const __m512 inv = _mm512_div_ps(one, _mm512_add_ps(iwx, _mm512_mul_ps(iw2, fy)));
-    __m512i rgba = _mm512_setzero_si512();
-    __mmask16 bad = 0;
-    for (int k = 0; k < 4; ++k) {
-      const __m512 v = _mm512_mul_ps(_mm512_add_ps(cx[k], _mm512_mul_ps(cy[k], fy)), inv);
-      bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
-      // Clamp (a NaN becomes 0), scale, round half to even (the default), into byte k.
-      const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
-      rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));
-    }
+    const __m512 inv = _mm512_div_ps(_mm512_set1_ps(1), _mm512_add_ps(iwx, _mm512_mul_ps(iw2, fy)));
+    __m512 over_w[4];
+    for (int k = 0; k < 4; ++k) over_w[k] = _mm512_add_ps(cx[k], _mm512_mul_ps(cy[k], fy));
+    __mmask16 bad;
+    const __m512i rgba = pack_rgba(over_w, inv, bad);
     nonfinite += unsigned(__builtin_popcount(unsigned(bad & pass)));
     store_rows<Wide>(reinterpret_cast<int*>(fb.color.data()) + at, pitch, pass, rgba);
   }
@@ -172,10 +187,6 @@ constexpr std::array<uint16_t, 16> kRowLanes4 = [] {
   return t;
 }();
 constexpr uint16_t kRowLanes8[4] = {0x0000, 0x00FF, 0xFF00, 0xFFFF};
-
-}  // namespace
-
-namespace {
 
 inline BoxCoverage coverage(const BoxEdges& t, const Bands& bands) {
   BoxCoverage c;
@@ -267,34 +278,16 @@ uint64_t segment(const RowPlanes& p, const Row& r, int x, __mmask16 lanes, GLenu
     const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(_mm512_add_pd(p.z0, _mm512_mul_pd(p.z1, x_lo)), r.zy))),
                                          depth24x8(_mm512_add_pd(_mm512_add_pd(p.z0, _mm512_mul_pd(p.z1, x_hi)), r.zy)), 1);
     const __m512i stored = _mm512_maskz_loadu_epi32(lanes, r.zrow + x);
-    if constexpr (D == kLess) pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored);
-    else if constexpr (D == kLequal) pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored);
-    else {
-      switch (depth_func) {
-        case GL_NEVER: pass = 0; break;
-        case GL_LESS: pass = _mm512_mask_cmplt_epi32_mask(lanes, z, stored); break;
-        case GL_EQUAL: pass = _mm512_mask_cmpeq_epi32_mask(lanes, z, stored); break;
-        case GL_LEQUAL: pass = _mm512_mask_cmple_epi32_mask(lanes, z, stored); break;
-        case GL_GREATER: pass = _mm512_mask_cmpgt_epi32_mask(lanes, z, stored); break;
-        case GL_NOTEQUAL: pass = _mm512_mask_cmpneq_epi32_mask(lanes, z, stored); break;
-        case GL_GEQUAL: pass = _mm512_mask_cmpge_epi32_mask(lanes, z, stored); break;
-        default: break;
-      }
-    }
+    pass = depth_test<D>(lanes, z, stored, depth_func);
     _mm512_mask_storeu_epi32(r.zrow + x, pass, z);
     if (!pass) return 0;
   }
-  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1), k255 = _mm512_set1_ps(255);
   const __m512 fx = _mm512_add_ps(_mm512_cvtepi32_ps(px), _mm512_set1_ps(0.5f));
-  const __m512 inv = _mm512_div_ps(one, _mm512_add_ps(_mm512_add_ps(p.iw0, _mm512_mul_ps(p.iw1, fx)), r.iwy));
-  __m512i rgba = _mm512_setzero_si512();
-  __mmask16 bad = 0;
-  for (int k = 0; k < 4; ++k) {
-    const __m512 v = _mm512_mul_ps(_mm512_add_ps(_mm512_add_ps(p.c0[k], _mm512_mul_ps(p.cx[k], fx)), r.cy[k]), inv);
-    bad |= _mm512_fpclass_ps_mask(v, 0x99);  // NaN or infinity
-    const __m512i q = _mm512_cvtps_epi32(_mm512_mul_ps(_mm512_min_ps(_mm512_max_ps(v, zero), one), k255));
-    rgba = _mm512_or_si512(rgba, _mm512_slli_epi32(q, unsigned(8 * k)));
-  }
+  const __m512 inv = _mm512_div_ps(_mm512_set1_ps(1), _mm512_add_ps(_mm512_add_ps(p.iw0, _mm512_mul_ps(p.iw1, fx)), r.iwy));
+  __m512 over_w[4];
+  for (int k = 0; k < 4; ++k) over_w[k] = _mm512_add_ps(_mm512_add_ps(p.c0[k], _mm512_mul_ps(p.cx[k], fx)), r.cy[k]);
+  __mmask16 bad;
+  const __m512i rgba = pack_rgba(over_w, inv, bad);
   _mm512_mask_storeu_epi32(r.crow + x, pass, rgba);
   return unsigned(__builtin_popcount(unsigned(bad & pass)));
 }
