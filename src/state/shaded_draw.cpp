@@ -12,7 +12,6 @@
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
-#include "raster/box.h"
 #include "state/client_arrays.h"
 #include "state/context.h"
 #include "state/float_matrix.h"
@@ -56,7 +55,7 @@ inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalize
 // Object-space normals to eye space: a row vector times M^-1 (the inverse transpose), then
 // normalized (a zero normal stays zero, ambient and emission only, and is reported) or rescaled
 // (rescale > 0), in double as glm computes them, then to float.
-void eye_normals_scalar(const glm::dvec3* raw, int m, const glm::dmat3& inv, bool normalize, double rescale,
+void eye_normals(const glm::dvec3* raw, int m, const glm::dmat3& inv, bool normalize, double rescale,
                         glm::vec3* out, bool* zero_normal) {
   for (int j = 0; j < m; ++j) {
     glm::dvec3 n = raw[j] * inv;
@@ -69,49 +68,6 @@ void eye_normals_scalar(const glm::dvec3* raw, int m, const glm::dmat3& inv, boo
     }
     out[j] = glm::vec3(n);
   }
-}
-
-#pragma GCC push_options
-#pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
-// The same eight at a time: the same operations in glm's order, lane by lane.
-void eye_normals_wide(const glm::dvec3* raw, int m, const glm::dmat3& inv, bool normalize, double rescale,
-                      glm::vec3* out, bool* zero_normal) {
-  static_assert(sizeof(glm::dvec3) == 24 && sizeof(glm::vec3) == 12, "packed vectors");
-  const __m512i three = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 18, 21);  // component 0 of each of eight
-  int j = 0;
-  for (; j + 8 <= m; j += 8) {
-    const double* d = &raw[j].x;
-    const __m512d a = _mm512_loadu_pd(d), b = _mm512_loadu_pd(d + 8), c = _mm512_loadu_pd(d + 16);
-    __m512d v[3];
-    for (int k = 0; k < 3; ++k) {  // index 3i + k of 24: from a and b, then c past 15
-      const __m512i at = _mm512_add_epi64(three, _mm512_set1_epi64(k));
-      const __m512d ab = _mm512_permutex2var_pd(a, at, b);
-      v[k] = _mm512_mask_permutexvar_pd(ab, _mm512_cmpge_epi64_mask(at, _mm512_set1_epi64(16)), _mm512_sub_epi64(at, _mm512_set1_epi64(16)), c);
-    }
-    __m512d n[3];
-    for (int r = 0; r < 3; ++r)
-      n[r] = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_set1_pd(inv[r][0]), v[0]), _mm512_mul_pd(_mm512_set1_pd(inv[r][1]), v[1])),
-                           _mm512_mul_pd(_mm512_set1_pd(inv[r][2]), v[2]));
-    if (normalize) {
-      const __m512d len = _mm512_sqrt_pd(_mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(n[0], n[0]), _mm512_mul_pd(n[1], n[1])), _mm512_mul_pd(n[2], n[2])));
-      const __mmask8 positive = _mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_GT_OQ);
-      if (positive != 0xFF) *zero_normal = true;
-      for (int r = 0; r < 3; ++r) n[r] = _mm512_mask_div_pd(n[r], positive, n[r], len);
-    } else if (rescale > 0) {
-      for (int r = 0; r < 3; ++r) n[r] = _mm512_div_pd(n[r], _mm512_set1_pd(rescale));
-    }
-    alignas(32) float f[3][8];
-    for (int r = 0; r < 3; ++r) _mm256_store_ps(f[r], _mm512_cvtpd_ps(n[r]));
-    for (int i = 0; i < 8; ++i) out[j + i] = {f[0][i], f[1][i], f[2][i]};
-  }
-  eye_normals_scalar(raw + j, m - j, inv, normalize, rescale, out + j, zero_normal);
-}
-#pragma GCC pop_options
-
-void eye_normals(const glm::dvec3* raw, int m, const glm::dmat3& inv, bool normalize, double rescale, glm::vec3* out,
-                 bool* zero_normal) {
-  if (raster::detail::wide_kernels()) return eye_normals_wide(raw, m, inv, normalize, rescale, out, zero_normal);
-  eye_normals_scalar(raw, m, inv, normalize, rescale, out, zero_normal);
 }
 
 }  // namespace
