@@ -420,7 +420,8 @@ void bin_range(const List& l, size_t first, size_t last, int units, uint32_t** o
 // stopped. Each owner's list takes a compressed store of sixteen: the lists have that much room
 // beyond their last element.
 size_t bin16(const List& l, size_t first, size_t last, int units, uint32_t** out) {
-  static_assert(kBandRows == 64, "bands by a shift");
+  static_assert((kBandRows & (kBandRows - 1)) == 0, "bands by a shift");
+  constexpr int kShift = __builtin_ctz(kBandRows);
   const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const __m512i k127 = _mm512_set1_epi32(127), k128 = _mm512_set1_epi32(128), zero = _mm512_setzero_si512();
   const __m512i last_col = _mm512_set1_epi32(l.fb.width - 1), last_row = _mm512_set1_epi32(l.fb.height - 1);
@@ -462,8 +463,8 @@ size_t bin16(const List& l, size_t first, size_t last, int units, uint32_t** out
     const __m512i col_lo = _mm512_max_epi32(zero, _mm512_srai_epi32(_mm512_add_epi32(xlo, k127), 8));
     const __m512i col_hi = _mm512_min_epi32(last_col, _mm512_srai_epi32(_mm512_sub_epi32(xhi, k128), 8));
     const __mmask16 keep = _mm512_cmple_epi32_mask(row_lo, row_hi) & _mm512_cmple_epi32_mask(col_lo, col_hi) & ~clipped;
-    const __m512i band_lo = _mm512_srai_epi32(row_lo, 6);
-    const __m512i bands = _mm512_min_epi32(_mm512_sub_epi32(_mm512_srai_epi32(row_hi, 6), band_lo), span);  // met, less one
+    const __m512i band_lo = _mm512_srai_epi32(row_lo, kShift);
+    const __m512i bands = _mm512_min_epi32(_mm512_sub_epi32(_mm512_srai_epi32(row_hi, kShift), band_lo), span);  // met, less one
     // band_lo % units: the quotient of (band_lo + 0.5) / units is never near a whole number.
     const __m512i q = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_add_ps(_mm512_cvtepi32_ps(band_lo), _mm512_set1_ps(0.5f)), per_unit));
     const __m512i first_owner = _mm512_sub_epi32(band_lo, _mm512_mullo_epi32(q, _mm512_set1_epi32(units)));
