@@ -133,6 +133,9 @@ std::vector<BadMesh> bad_meshes() {
       {"off_counts_on_header_line", "oneline.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
        "put the counts on the line after 'OFF'"},
       {"off_binary", "binary.off", "OFF BINARY\n", "binary OFF is not supported"},
+      // OpenMesh takes "BINARY" one character after "OFF", within a word (found by fuzzing).
+      {"off_binary_in_a_word", "binary_word.off", std::string("OFFOBINARYF\0\0\0NOFF\n\n0 0 1\n", 21),
+       "binary OFF is not supported"},
       {"off_not_off", "notoff.off", "PLY\n", "is not an OFF header"},
       {"ply_huge_count", "huge.ply",
        "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
