@@ -63,17 +63,23 @@ void check_off(const std::string& data) {
   };
   std::vector<std::string> t;
   if (!next(t)) corrupt("the file is empty");
-  const std::string& magic = t[0];
-  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0)
-    corrupt("line " + std::to_string(line_no) + " is not an OFF header ('" + magic + "')");
-  const std::string prefix = magic.substr(0, magic.size() - 3);
-  if (prefix.find('4') != std::string::npos || prefix.find('n') != std::string::npos)
-    corrupt("4D and n-dimensional OFF ('" + magic + "') are not supported");
   // OpenMesh reads a binary file when the header's raw characters have "BINARY" one character
   // after "OFF" ("OFFxBINARY" too), whatever the words: any "BINARY" on the first line is refused
   // (found by fuzz/: binary counts of billions).
   if (data.substr(0, data.find('\n')).find("BINARY") != std::string::npos)
     corrupt("binary OFF is not supported (use ASCII OFF, OBJ, PLY or STL)");
+  const std::string& magic = t[0];
+  // OpenMesh takes the header's options from the file's first characters, [ST][C][N][4][n]OFF:
+  // read the same way here, so that both walk the same layout (found by fuzz/: "OFFCOFF", colours
+  // here and none there).
+  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0)
+    corrupt("line " + std::to_string(line_no) + " is not an OFF header ('" + magic + "')");
+  const std::string prefix = magic.substr(0, magic.size() - 3);
+  if (prefix.find('4') != std::string::npos || prefix.find('n') != std::string::npos)
+    corrupt("4D and n-dimensional OFF ('" + magic + "') are not supported");
+  if (prefix.find("ST") != std::string::npos) corrupt("OFF with texture coordinates ('" + magic + "') is not supported");
+  if (line_no != 1 || data.compare(0, magic.size(), magic) != 0 || (prefix != "" && prefix != "C" && prefix != "N" && prefix != "CN"))
+    corrupt("line " + std::to_string(line_no) + " is not an OFF header ('" + magic + "': [C][N]OFF at the file's start)");
   if (t.size() > 1) corrupt("line " + std::to_string(line_no) + ": put the counts on the line after '" + magic + "'");
   if (!next(t)) corrupt("the OFF header has no vertex and face counts");
   long long nv = 0, nf = 0;

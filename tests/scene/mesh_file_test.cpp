@@ -137,6 +137,9 @@ std::vector<BadMesh> bad_meshes() {
       {"off_binary_in_a_word", "binary_word.off", std::string("OFFOBINARYF\0\0\0NOFF\n\n0 0 1\n", 21),
        "binary OFF is not supported"},
       {"off_not_off", "notoff.off", "PLY\n", "is not an OFF header"},
+      // OpenMesh reads no colours from "OFFCOFF" and this reader would: refused (found by fuzzing).
+      {"off_header_word", "header_word.off", "OFFCOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "is not an OFF header"},
+      {"off_texture_coordinates", "st.off", "STOFF\n3 1 0\n0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 2\n", "texture coordinates"},
       {"ply_huge_count", "huge.ply",
        "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
        "property float z\nend_header\nabc",
