@@ -159,8 +159,8 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
   uint64_t nonfinite = 0;
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
   // Pixels lo..hi of row py are covered. Each pixel's values come from the planes at its own
-  // centre, (p0 + px X) + py Y, never stepped from a neighbour: the vector box kernel
-  // (raster/box.h) computes the same bits eight pixels at a time.
+  // centre, (p0 + px X) + py Y, never stepped from a neighbour: the kernels of raster/box.h
+  // compute the same bits sixteen pixels at a time.
   auto draw_span = [&](int py, int lo, int hi) {
     if (!ready) {
       if (!planes()) return false;
@@ -225,16 +225,18 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!draw_span(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
     }
   } else if (t.xmax - t.xmin < 8 && t.ymax - t.ymin < 8 && ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
+    // At most 8x8 pixel centres (most triangles of a subdivided sphere): the box kernel.
     int32_t edges[kEdgeFields];
     box_edges(t, edges);
     const BoxCoverage c = box_coverage({edges, 1}, bands);
     if (c.blocks && planes()) nonfinite = box_shade<D>(fb, {t.z, t.inv_w, 1}, t.xmin, t.ymin, depth_func, c);
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
+    // Mid-size: rows of sixteen pixels tested by edge functions.
     int32_t edges[kEdgeFields];
     box_edges(t, edges);
     if (planes()) nonfinite = rows_shade<D>(fb, {edges, 1}, {t.z, t.inv_w, 1}, bands, depth_func);
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
-    // Small (most triangles): edge functions relative to the box's first pixel centre fit in 32
+    // Small (without AVX-512): edge functions relative to the box's first pixel centre fit in 32
     // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.
     const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;
     int32_t e0[3], eb[3];

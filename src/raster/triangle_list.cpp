@@ -337,7 +337,7 @@ void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, 
 
 // The corners of the list entries [0, lanes) (lanes past them repeat the last), built and stored
 // as whole vectors: setup8 loads them as vectors, which element-by-element stores would stall.
-// Returns the lanes to clip. Indices in 31 bits (see chunk_corners_fit).
+// Returns the lanes to clip. Indices in 31 bits (draw_bins_wide checks that they fit).
 unsigned chunk_corners(const List& l, const uint32_t* entries, int lanes, uint32_t (&corner)[3][8]) {
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256i entry = _mm256_permutexvar_epi32(_mm256_min_epi32(lane, _mm256_set1_epi32(lanes - 1)),

@@ -1,7 +1,8 @@
 // Triangles that share their vertices, as glDrawArrays, glDrawElements and immediate mode give
 // them. Each vertex is mapped to the window once; each triangle is binned once, as a 4-byte
-// number, to the threads whose bands of rows it meets, and set up where it is drawn, so the planes
-// of a triangle that covers no pixel centre are never computed.
+// number, to the threads whose bands of rows it meets (sixteen triangles at a time with AVX-512),
+// and set up where it is drawn: eight at a time for the box kernel (raster/box.h) when the state
+// is smooth colour without secondary colour, culling or two-sided lighting, one by one otherwise.
 #pragma once
 #include <climits>
 #include <cstdint>
@@ -54,8 +55,8 @@ struct TriangleBins {
 // takes a contiguous share of the triangles, drops those that enclose no pixel centre and keeps
 // the others for the threads whose bands they meet), then drawing (each thread sets up and draws
 // what was kept for it, in primitive order). Triangles that need clipping take clip_and_map. Not
-// for feedback, and s.float_window must be set.
-// `clear`, when pending, is done first: each thread clears the bands it draws, just before.
+// for feedback, and s.float_window must be set. `clear`, when pending, is done first: each
+// thread clears the bands it draws, just before it draws them.
 void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
                         size_t triangles, Workers& workers, TriangleBins& bins, const ClearRequest& clear = {});
 
