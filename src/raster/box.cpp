@@ -120,7 +120,7 @@ __m512i pack_rgba(const __m512 (&over_w)[4], __m512 inv, __mmask16& bad) {
 }
 
 template <DepthMode D, bool Wide>
-uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
+__attribute__((always_inline)) inline uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
   constexpr int kRows = Wide ? 2 : 4;  // per block
   // Centres: X = x + 0.5 and Y = y + 0.5 exactly, as lane offsets added to the block's corner.
   const __m512i dy = lane_dy(Wide);
@@ -188,7 +188,7 @@ constexpr std::array<uint16_t, 16> kRowLanes4 = [] {
 }();
 constexpr uint16_t kRowLanes8[4] = {0x0000, 0x00FF, 0xFF00, 0xFFFF};
 
-inline BoxCoverage coverage(const BoxEdges& t, const Bands& bands) {
+__attribute__((always_inline)) inline BoxCoverage coverage(const BoxEdges& t, const Bands& bands) {
   BoxCoverage c;
   const int xmin = t(kXmin), ymin = t(kYmin), ymax = t(kYmax), w = t(kXmax) - xmin + 1, h = ymax - ymin + 1;
   c.wide = w > 4;
