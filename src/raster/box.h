@@ -61,9 +61,7 @@ BoxCoverage box_coverage(const BoxEdges& e, const Bands& bands);
 template <DepthMode D>
 uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c);
 
-// Both, for planes already known to be within float.
-template <DepthMode D>
-uint64_t box_draw(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func);
+// Both in one, inline, for callers compiled for AVX-512: raster/box_kernels.h.
 
 // Pixels lo..hi of row y, sixteen at a time, the same bits: for the long spans of large triangles.
 template <DepthMode D>

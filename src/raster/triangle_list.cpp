@@ -14,6 +14,11 @@
 #include <array>
 #include <cmath>
 
+#pragma GCC push_options
+#pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
+#include "raster/box_kernels.h"
+#pragma GCC pop_options
+
 namespace ffc::raster {
 
 namespace {
@@ -515,7 +520,10 @@ void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* 
   }
 }
 
-// The same, eight triangles set up at a time for the box kernel; those it cannot draw go as above.
+#pragma GCC push_options
+#pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
+// The same, eight triangles set up at a time for the box kernel (inline: compiled for AVX-512, as
+// it runs only where the CPU has it); those it cannot draw go as above.
 template <detail::DepthMode D>
 void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
   uint64_t nonfinite = 0;
@@ -556,11 +564,11 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
           if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
           if (!bits || !(st.ok >> lane & 1)) continue;
           detail::BoxCoverage c{{uint16_t((bits & 3) | (bits & 0xC) << 2), 0, 0, 0}, 1, false};  // lanes 0, 1, 4, 5
-          nonfinite += detail::box_shade<D>(l.fb, {&st.z[0][lane], &st.f[0][lane], 8}, st.edges[detail::kXmin][lane], ymin,
-                                            l.s.depth_func, c);
+          nonfinite += detail::shade<D, false>(l.fb, {&st.z[0][lane], &st.f[0][lane], 8}, st.edges[detail::kXmin][lane], ymin,
+                                               l.s.depth_func, c);
         } else if (st.box >> lane & 1) {
           if (st.ok >> lane & 1)  // else not drawn, as smooth_planes decides
-            nonfinite += detail::box_draw<D>(l.fb, {&st.edges[0][lane], 8}, {&st.z[0][lane], &st.f[0][lane], 8}, mine, l.s.depth_func);
+            nonfinite += detail::box_draw_inline<D>(l.fb, {&st.edges[0][lane], 8}, {&st.z[0][lane], &st.f[0][lane], 8}, mine, l.s.depth_func);
         } else if (!(st.none >> lane & 1)) {
           const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
           draw_one<D>(l, vi, p, mine);
@@ -570,6 +578,7 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
   }
   if (nonfinite) detail::g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
 }
+#pragma GCC pop_options
 
 }  // namespace
 
