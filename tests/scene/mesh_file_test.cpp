@@ -120,6 +120,9 @@ std::vector<BadMesh> bad_meshes() {
       {"obj_normal_out_of_range", "normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n",
        "refers to normal '2' but 1 are defined so far"},
       {"obj_word_coordinate", "word.obj", "v 0 0 zero\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "'zero' is not a finite number"},
+      // OpenMesh skips a line starting with a vertical tab: so does the check (found by fuzzing).
+      {"obj_vertical_tab", "vtab.obj", "\vv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 4\n",
+       "line 5: face corner '4' refers to vertex '4' but 3 are defined so far"},
       {"unsupported", "model.3ds", "anything", "unsupported format '.3ds'"},
       {"off_counts_too_big", "counts.off", "OFF\n99999999 1 0\n0 0 0\n", "more than the file's"},
       {"off_face_too_long", "long_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n999999999 0 1 2\n",
