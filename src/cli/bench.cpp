@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli/common.h"
+#include "raster/box.h"
 
 namespace ffc::cli {
 
@@ -80,14 +81,16 @@ void add_bench(CLI::App& app) {
     nlohmann::json j = {{"scene", opts->json(d)}, {"frames", *frames}, {"block", *block}, {"median_ms", medians},
                         {"spread", all}, {"peak_rss_mb", ru.ru_maxrss / 1024.0},
                         // C++ heap allocations per timed frame (Mesa's C code allocates with malloc: not seen)
-                        {"allocations_per_frame", alloc_json}};
+                        {"allocations_per_frame", alloc_json},
+                        // soft's rasterizer: the AVX-512 kernels or the portable scalar loops (same pictures)
+                        {"soft_kernels", raster::detail::wide_kernels() ? "avx512" : "scalar"}};
     if (median.count("mesa") && median.count("soft")) j["speedup"] = median["mesa"] / median["soft"];
     if (*json) return print_json(j);
     std::printf("%-12s %12s %18s\n", "backend", "median ms", "allocations/frame");
     for (const auto& n : names) std::printf("%-12s %12.3f %18.1f\n", n.c_str(), median[n], alloc_json[n].get<double>());
     if (j.contains("speedup")) std::printf("speedup (mesa / soft): %.2fx\n", j["speedup"].get<double>());
-    std::printf("%d frames each in blocks of %d, %dx%d; peak RSS %.0f MB\n", *frames, *block, d.width, d.height,
-                ru.ru_maxrss / 1024.0);
+    std::printf("%d frames each in blocks of %d, %dx%d; peak RSS %.0f MB; soft's kernels: %s\n", *frames, *block, d.width,
+                d.height, ru.ru_maxrss / 1024.0, raster::detail::wide_kernels() ? "AVX-512" : "scalar");
   });
 }
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <optional>
 #include <cstddef>
 
@@ -21,7 +22,8 @@ bool cpu_has_kernel_isa() { return __builtin_cpu_supports("avx2") && __builtin_c
          __builtin_cpu_supports("avx512dq"); }
 }  // namespace
 
-bool g_wide_kernels = cpu_has_kernel_isa();
+// FFCOMPAT_SCALAR=1 in the environment keeps the portable loops (to compare pictures and speed).
+bool g_wide_kernels = cpu_has_kernel_isa() && !std::getenv("FFCOMPAT_SCALAR");
 void set_wide_kernels(bool on) { g_wide_kernels = on && cpu_has_kernel_isa(); }
 
 static_assert(offsetof(Triangle, cy) + 4 * sizeof(float) == offsetof(Triangle, inv_w) + kPlaneFloats * sizeof(float),

@@ -18,8 +18,9 @@ struct Result {
   std::string out;
 };
 
-Result ffcompat(const std::string& args) {
-  const std::string cmd = std::string(FFCOMPAT_EXE) + " " + args + " 2>/dev/null";
+// env: assignments put before the command ("NAME=value").
+Result ffcompat(const std::string& args, const std::string& env = "") {
+  const std::string cmd = env + (env.empty() ? "" : " ") + std::string(FFCOMPAT_EXE) + " " + args + " 2>/dev/null";
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
@@ -121,6 +122,12 @@ TEST(Cli, BenchReportsMediansTheRatioAndNoAllocationPerFrame) {
   // The memory goal: in steady state our pipeline allocates nothing, on either path.
   EXPECT_EQ(j["allocations_per_frame"]["soft"], 0.0);
   EXPECT_EQ(j["allocations_per_frame"]["soft-double"], 0.0);
+  // Which rasterizer ran: the AVX-512 kernels where the CPU has them, the scalar loops on request.
+  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
+  EXPECT_EQ(j["soft_kernels"], avx512 ? "avx512" : "scalar");
+  const Result scalar = ffcompat("bench --scene cube --frames 2 --block 1 --backends soft --json", "FFCOMPAT_SCALAR=1");
+  ASSERT_EQ(scalar.status, 0);
+  EXPECT_EQ(nlohmann::json::parse(scalar.out)["soft_kernels"], "scalar");
 }
 
 }  // namespace
