@@ -170,24 +170,25 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       nonfinite += span_shade<D>(fb, {t.z, t.inv_w, 1}, py, lo, hi, depth_func);
       return true;
     }
-    const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_loadu_ps(t.cy);
-    const double y = py + 0.5;
-    const float fy = float(y);
+    // py Y once for the row: the same products, so the same bits.
+    const double y = py + 0.5, zy = t.z[2] * y;
+    const float fy = float(y), iwy = t.inv_w[2] * fy;
+    const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
     uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
     uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
     for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
       const double x = px + 0.5;
       bool pass = true;
       if constexpr (D != kNoDepth) {
-        const uint32_t zi = depth24(t.z[0] + t.z[1] * x + t.z[2] * y);
+        const uint32_t zi = depth24(t.z[0] + t.z[1] * x + zy);
         if constexpr (D == kLess) pass = zi < *zp;
         else if constexpr (D == kLequal) pass = zi <= *zp;
         else pass = depth_pass(depth_func, zi, *zp);
         if (pass) *zp = zi;
       }
       if (pass) {
-        const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + t.inv_w[2] * fy;
-        const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), _mm_mul_ps(cy, _mm_set1_ps(fy)));
+        const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + iwy;
+        const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), cy);
         // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
         __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
         nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
