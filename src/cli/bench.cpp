@@ -12,6 +12,7 @@
 
 #include "cli/common.h"
 #include "raster/box.h"
+#include "state/context.h"
 
 namespace ffc::cli {
 
@@ -22,6 +23,7 @@ void add_bench(CLI::App& app) {
   auto frames = std::make_shared<int>(20);
   auto block = std::make_shared<int>(5);
   auto json = std::make_shared<bool>(false);
+  auto threads = std::make_shared<int>(0);
   opts->add_to(cmd);
   cmd->add_option("--backends", *backends_list, "Comma-separated: mesa, soft, soft-double")->capture_default_str();
   cmd->add_option("--frames", *frames, "Timed frames per backend (after one warm-up frame)")
@@ -29,6 +31,9 @@ void add_bench(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--block", *block, "Frames a backend draws before the next one takes its turn")
       ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--threads", *threads, "Threads for soft and soft-double (0: the default, both cores)")
+      ->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_flag("--json", *json, "Print {median_ms: {backend: ms}, speedup, ...}");
   cmd->callback([=] {
@@ -42,6 +47,7 @@ void add_bench(CLI::App& app) {
     for (const std::string& name : names) {
       backends.push_back(backends::make(name));
       backends.back()->begin(d.width, d.height);
+      if (*threads > 0 && name != "mesa") state::Context::current()->set_threads(*threads);
       issue();  // warm-up: Mesa compiles its fixed-function programs on the first frame
       (void)backends.back()->read();
     }
@@ -78,7 +84,7 @@ void add_bench(CLI::App& app) {
     }
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
-    nlohmann::json j = {{"scene", opts->json(d)}, {"frames", *frames}, {"block", *block}, {"median_ms", medians},
+    nlohmann::json j = {{"scene", opts->json(d)}, {"frames", *frames}, {"block", *block}, {"threads", *threads}, {"median_ms", medians},
                         {"spread", all}, {"peak_rss_mb", ru.ru_maxrss / 1024.0},
                         // C++ heap allocations per timed frame (Mesa's C code allocates with malloc: not seen)
                         {"allocations_per_frame", alloc_json},

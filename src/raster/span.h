@@ -225,17 +225,17 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!(mask & 3) || !bands.owns(py / kBandRows)) continue;
       if (!draw_span(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
     }
-  } else if (t.xmax - t.xmin < 8 && t.ymax - t.ymin < 8 && ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
-    // At most 8x8 pixel centres (most triangles of a subdivided sphere): the box kernel.
-    int32_t edges[kEdgeFields];
-    box_edges(t, edges);
-    const BoxCoverage c = box_coverage({edges, 1}, bands);
-    if (c.blocks && planes()) nonfinite = box_shade<D>(fb, {t.z, t.inv_w, 1}, t.xmin, t.ymin, depth_func, c);
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
-    // Mid-size: rows of sixteen pixels tested by edge functions.
+    // Edge functions in 32 bits: at most 8x8 pixel centres (most triangles of a subdivided
+    // sphere) by the box kernel, larger boxes in rows of sixteen pixels.
     int32_t edges[kEdgeFields];
     box_edges(t, edges);
-    if (planes()) nonfinite = rows_shade<D>(fb, {edges, 1}, {t.z, t.inv_w, 1}, bands, depth_func);
+    if (t.xmax - t.xmin < 8 && t.ymax - t.ymin < 8) {
+      const BoxCoverage c = box_coverage({edges, 1}, bands);
+      if (c.blocks && planes()) nonfinite = box_shade<D>(fb, {t.z, t.inv_w, 1}, t.xmin, t.ymin, depth_func, c);
+    } else if (planes()) {
+      nonfinite = rows_shade<D>(fb, {edges, 1}, {t.z, t.inv_w, 1}, bands, depth_func);
+    }
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
     // Small (without AVX-512): edge functions relative to the box's first pixel centre fit in 32
     // bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.

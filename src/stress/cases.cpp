@@ -195,6 +195,18 @@ void gluLookAtLike(const std::array<double, 3>& target) {
   gluLookAt(e[0], e[1], e[2], target[0], target[1], target[2], 0, 1, 0);
 }
 
+// A patch of the icosphere seen face on from outside, its centroid in the middle, 1.2 wide.
+void draw_patch_face_on(const Geometry& g) {
+  scenes::standard();
+  const auto ctr = scenes::centroid(g);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(-0.6, 0.6, -0.6, 0.6, -3, 3);
+  glMatrixMode(GL_MODELVIEW);
+  gluLookAtLike(ctr);
+  scenes::draw(g);
+}
+
 std::vector<Case> build() {
   std::vector<Case> out;
   auto add = [&](Case c) { out.push_back(std::move(c)); };
@@ -899,15 +911,8 @@ std::vector<Case> build() {
     c.name = "icosphere_patch_depth9";
     c.width = c.height = 128;
     c.draw = [] {
-      static const Geometry g = scenes::icosphere_patch(9);
-      scenes::standard();
-      const auto ctr = scenes::centroid(g);
-      glMatrixMode(GL_PROJECTION);
-      glLoadIdentity();
-      glOrtho(-0.6, 0.6, -0.6, 0.6, -3, 3);
-      glMatrixMode(GL_MODELVIEW);
-      gluLookAtLike(ctr);
-      scenes::draw(g);
+      static const Geometry g = scenes::icosphere_patch(9);  // built once per process
+      draw_patch_face_on(g);
     };
     c.feedback_hint = size_t(23) << 18;
     c.note = "One face of the icosahedron subdivided 9 times as src/mesh's icosphere does (262144 "
@@ -922,15 +927,8 @@ std::vector<Case> build() {
     c.slow = true;
     c.width = c.height = 128;
     c.draw = [] {
-      static const Geometry g = scenes::icosphere_patch(10);
-      scenes::standard();
-      const auto ctr = scenes::centroid(g);
-      glMatrixMode(GL_PROJECTION);
-      glLoadIdentity();
-      glOrtho(-0.6, 0.6, -0.6, 0.6, -3, 3);
-      glMatrixMode(GL_MODELVIEW);
-      gluLookAtLike(ctr);
-      scenes::draw(g);
+      static const Geometry g = scenes::icosphere_patch(10);  // built once per process
+      draw_patch_face_on(g);
     };
     c.feedback_hint = size_t(23) << 20;
     c.note = "The same face subdivided 10 times: 1048576 triangles, 525825 vertices (a twentieth of the "

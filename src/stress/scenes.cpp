@@ -130,6 +130,21 @@ void standard(bool lit) {
   glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 32);
 }
 
+namespace {
+
+// g's triangles from positions of `size` components and normals, both of `type`, as client arrays.
+void draw_arrays(const Geometry& g, GLint size, GLenum type, const void* positions, const void* normals) {
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(size, type, 0, positions);
+  glNormalPointer(type, 0, normals);
+  glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+}
+
+}  // namespace
+
 void draw(const Geometry& g, const std::array<double, 3>& scale, double normal_scale) {
   std::vector<float> p, n;
   p.reserve(g.positions.size() * 3), n.reserve(g.normals.size() * 3);
@@ -137,13 +152,7 @@ void draw(const Geometry& g, const std::array<double, 3>& scale, double normal_s
     for (int k = 0; k < 3; ++k) p.push_back(float(v[k] * scale[k]));
   for (const auto& v : g.normals)
     for (double x : v) n.push_back(float(x * normal_scale));
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_NORMAL_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, p.data());
-  glNormalPointer(GL_FLOAT, 0, n.data());
-  glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
-  glDisableClientState(GL_VERTEX_ARRAY);
-  glDisableClientState(GL_NORMAL_ARRAY);
+  draw_arrays(g, 3, GL_FLOAT, p.data(), n.data());
 }
 
 void draw_homogeneous(const Geometry& g, double scale, float w) {
@@ -152,13 +161,7 @@ void draw_homogeneous(const Geometry& g, double scale, float w) {
     for (int k = 0; k < 3; ++k) p.push_back(float(g.positions[i][k] * scale)), n.push_back(float(g.normals[i][k]));
     p.push_back(w);
   }
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_NORMAL_ARRAY);
-  glVertexPointer(4, GL_FLOAT, 0, p.data());
-  glNormalPointer(GL_FLOAT, 0, n.data());
-  glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
-  glDisableClientState(GL_VERTEX_ARRAY);
-  glDisableClientState(GL_NORMAL_ARRAY);
+  draw_arrays(g, 4, GL_FLOAT, p.data(), n.data());
 }
 
 void draw_double(const Geometry& g, double scale) {
@@ -167,13 +170,7 @@ void draw_double(const Geometry& g, double scale) {
     for (double x : v) p.push_back(x * scale);
   for (const auto& v : g.normals)
     for (double x : v) n.push_back(x);
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_NORMAL_ARRAY);
-  glVertexPointer(3, GL_DOUBLE, 0, p.data());
-  glNormalPointer(GL_DOUBLE, 0, n.data());
-  glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
-  glDisableClientState(GL_VERTEX_ARRAY);
-  glDisableClientState(GL_NORMAL_ARRAY);
+  draw_arrays(g, 3, GL_DOUBLE, p.data(), n.data());
 }
 
 Geometry slivers() {

@@ -125,9 +125,12 @@ TEST(Cli, BenchReportsMediansTheRatioAndNoAllocationPerFrame) {
   // Which rasterizer ran: the AVX-512 kernels where the CPU has them, the scalar loops on request.
   const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
   EXPECT_EQ(j["soft_kernels"], avx512 ? "avx512" : "scalar");
-  const Result scalar = ffcompat("bench --scene cube --frames 2 --block 1 --backends soft --json", "FFCOMPAT_SCALAR=1");
+  const Result scalar = ffcompat("bench --scene cube --frames 2 --block 1 --backends soft --threads 1 --json", "FFCOMPAT_SCALAR=1");
   ASSERT_EQ(scalar.status, 0);
-  EXPECT_EQ(nlohmann::json::parse(scalar.out)["soft_kernels"], "scalar");
+  const auto js = nlohmann::json::parse(scalar.out);
+  EXPECT_EQ(js["soft_kernels"], "scalar");
+  EXPECT_EQ(js["threads"], 1);
+  EXPECT_NE(ffcompat("bench --scene cube --frames 2 --threads -1").status, 0);
 }
 
 }  // namespace
