@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <unistd.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -40,6 +41,8 @@ GLenum primitive_error(GLenum m) { return m == kPatches ? GL_INVALID_OPERATION :
 // Mesa's INT_TO_FLOAT (main/macros.h): GLint [-2^31, 2^31-1] onto [-1, 1] as (2i + 1) / (2^32 - 2).
 GLfloat int_to_float(GLint i) { return GLfloat((2.0f * GLfloat(i) + 1.0f) * (1.0f / 4294967294.0)); }
 bool valid_face(GLenum f) { return f == GL_FRONT || f == GL_BACK || f == GL_FRONT_AND_BACK; }
+// Clamped to [0, 1], a NaN to 0 as Mesa stores it (GL 2.1 leaves a NaN's clamp undefined).
+double clamp01(double x) { return x > 0 ? (x < 1 ? x : 1) : 0; }
 }  // namespace
 
 Context* Context::current() { return g_current; }
@@ -62,6 +65,9 @@ GLenum Context::GetError() {
 
 bool Context::outside_begin_end() {
   if (in_begin_) error(GL_INVALID_OPERATION);
+  // Nearly every call that checks this is one where Mesa flushes the vertices it keeps after
+  // glEnd (FLUSH_VERTICES), emptying the pending current values (see update_color_material).
+  else if (vertices_kept_) vertices_kept_ = false, flush_stored();
   return !in_begin_;
 }
 
@@ -132,9 +138,16 @@ void Context::set_enabled(GLenum cap, bool on) {
     else error(GL_INVALID_ENUM);
     return;
   }
+  if (cap == GL_COLOR_MATERIAL) {
+    if (*c == on) return;
+    flush_current();  // Mesa's enable.c: pending values first, then the tracking
+    *c = on;
+    constants_dirty_ = true;
+    if (on) update_color_material();
+    return;
+  }
   *c = on;
   constants_dirty_ = true;
-  if (cap == GL_COLOR_MATERIAL && on) Color(color_.r, color_.g, color_.b, color_.a);  // tracks at once
 }
 
 int Context::enabled_state(GLenum cap) {
@@ -174,15 +187,26 @@ void Context::set_client_state(GLenum array, bool on) {
 
 // ---------------------------------------------------------------- lights and materials
 
+glm::dmat4 Context::modelview() const {
+  return precision_ == Precision::Float ? glm::dmat4(modelview_f_.back()) : modelview_.back();
+}
+
+// The position and the spot direction are transformed by the modelview as it is when they are
+// set; in float, as Mesa's light.c does (TRANSFORM_POINT / TRANSFORM_DIRECTION with the float
+// matrix), so that a light moves exactly as the geometry drawn under the same matrix.
+glm::dvec4 Context::to_eye(const double* v, double w) const {
+  if (precision_ == Precision::Double) return modelview_.back() * glm::dvec4(v[0], v[1], v[2], w);
+  return glm::dvec4(fmat::transform(modelview_f_.back(), glm::vec4(float(v[0]), float(v[1]), float(v[2]), float(w))));
+}
+
 void Context::set_light(int i, GLenum pname, const double* v) {
   lighting::LightParams& l = lights_[i];
-  const glm::dmat4& mv = modelview_.back();
   switch (pname) {
     case GL_AMBIENT: l.ambient = glm::make_vec4(v); break;
     case GL_DIFFUSE: l.diffuse = glm::make_vec4(v); break;
     case GL_SPECULAR: l.specular = glm::make_vec4(v); break;
-    case GL_POSITION: l.position = mv * glm::make_vec4(v); break;
-    case GL_SPOT_DIRECTION: l.spot_direction = glm::dmat3(mv) * glm::make_vec3(v); break;
+    case GL_POSITION: l.position = to_eye(v, v[3]); break;
+    case GL_SPOT_DIRECTION: l.spot_direction = glm::dvec3(to_eye(v, 0)); break;
     case GL_SPOT_EXPONENT: l.spot_exponent = v[0]; break;
     case GL_SPOT_CUTOFF: l.spot_cutoff = v[0]; break;
     case GL_CONSTANT_ATTENUATION: l.constant_attenuation = v[0]; break;
@@ -280,7 +304,12 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
     auto set = [&](glm::dvec4& dst, GLenum attr) {
       const bool tracks = face_tracks && (cm_mode_ == attr || (cm_mode_ == GL_AMBIENT_AND_DIFFUSE &&
                                                                (attr == GL_AMBIENT || attr == GL_DIFFUSE)));
-      if (!tracks) dst = c;
+      if (tracks) return;
+      dst = c;
+      if (in_begin_ || spec_) return;
+      for (PendingMaterial& p : pending_materials_)
+        if (p.dst == &dst) return void(p.value = c);
+      pending_materials_.push_back({&dst, c});
     };
     switch (pname) {
       case GL_AMBIENT: set(m.ambient, GL_AMBIENT); break;
@@ -320,11 +349,67 @@ void Context::ColorMaterial(GLenum face, GLenum mode) {
   if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
       mode != GL_AMBIENT_AND_DIFFUSE)
     return error(GL_INVALID_ENUM);
+  if (face == cm_face_ && mode == cm_mode_) return;  // as Mesa: no flush, no tracking
   cm_face_ = face, cm_mode_ = mode;
   model_.cm_faces = face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3;
   model_.cm_mode = mode;
   constants_dirty_ = true;
-  if (color_material_) Color(color_.r, color_.g, color_.b, color_.a);
+  if (color_material_) {
+    flush_current();
+    update_color_material();
+  }
+}
+
+// ---------------------------------------------------------------- colour material, as Mesa tracks it
+//
+// GL 2.1 (2.14.3): while GL_COLOR_MATERIAL is enabled the chosen material parameters track the
+// current colour, always. Mesa 22.3 tracks it in steps, and programs see the steps:
+// - glColor and glMaterial outside glBegin/glEnd are held as pending values (vbo's current
+//   attributes) and copied to the GL state at a flush: at glBegin, every draw, glGetMaterialfv,
+//   the glGet of the current colour or normal, and the first state call after a glBegin/glEnd
+//   (then the pending set is emptied); and at glEnable(GL_COLOR_MATERIAL) and glColorMaterial
+//   (then it is kept: the next flush copies the same values again);
+// - at a copy, a pending colour that differs from the last copied one updates the tracked
+//   material, after the pending material values are copied; a glMaterial value, copied again at
+//   the next flush, therefore overrides what glEnable(GL_COLOR_MATERIAL) tracked;
+// - the lighting takes the tracked parameters from each vertex's colour only when the colour
+//   varies per vertex (a colour array, or glColor inside glBegin/glEnd); otherwise from the
+//   material state as tracked (ffvertex_prog.c).
+// The spec mode tracks at once and per vertex, as GL 2.1 says.
+
+void Context::update_color_material() {
+  if (!color_material_) return;
+  const glm::dvec4 c = flushed_color_;
+  for (int f = 0; f < 2; ++f) {
+    if (!(model_.cm_faces >> f & 1)) continue;
+    lighting::MaterialParams& m = materials_[f];
+    switch (cm_mode_) {
+      case GL_AMBIENT: m.ambient = c; break;
+      case GL_DIFFUSE: m.diffuse = c; break;
+      case GL_SPECULAR: m.specular = c; break;
+      case GL_EMISSION: m.emission = c; break;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = c; break;
+    }
+  }
+  constants_dirty_ = true;
+}
+
+void Context::copy_pending() {
+  const bool color_changed = color_ != flushed_color_;
+  flushed_color_ = color_;
+  for (const PendingMaterial& p : pending_materials_)
+    if (*p.dst != p.value) *p.dst = p.value, constants_dirty_ = true;
+  if (color_changed) update_color_material();
+}
+
+void Context::flush_current() {
+  if (!spec_) copy_pending();
+}
+
+void Context::flush_stored() {
+  if (spec_) return;
+  copy_pending();
+  pending_materials_.clear();
 }
 
 void Context::ShadeModel(GLenum mode) {
@@ -374,6 +459,7 @@ void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
 
 void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
   if (!outside_begin_end()) return;
+  flush_stored();  // Mesa: copied and emptied (measured: a glMaterial before it no longer overrides tracking)
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
   const lighting::MaterialParams& m = materials_[face == GL_BACK];
   glm::dvec4 v;
@@ -418,6 +504,7 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
   normalized = kRound;
   if (!outside_begin_end()) return 0;
   int n = 0;
+  const bool float_ = precision_ == Precision::Float;
   auto vec4 = [&](const glm::dvec4& c, bool color) {
     for (int k = 0; k < 4; ++k) out[k] = c[k];
     n = 4, normalized = color ? kFromFloat : kRound;
@@ -426,10 +513,12 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
     n = 16, normalized = kFromFloat;
   };
+  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL) flush_stored();  // as glGetMaterialfv
   switch (pname) {
-    case GL_MODELVIEW_MATRIX: mat(modelview_.back()); break;
-    case GL_TEXTURE_MATRIX: mat(texture_.back()); break;
-    case GL_PROJECTION_MATRIX: mat(projection_.back()); break;
+    // The float context reports its float matrices, as Mesa does: the ones it draws with.
+    case GL_MODELVIEW_MATRIX: mat(modelview()); break;
+    case GL_TEXTURE_MATRIX: mat(float_ ? glm::dmat4(texture_f_.back()) : texture_.back()); break;
+    case GL_PROJECTION_MATRIX: mat(float_ ? glm::dmat4(projection_f_.back()) : projection_.back()); break;
     case GL_MODELVIEW_STACK_DEPTH: FFC_GET(double(modelview_.size())); break;
     case GL_PROJECTION_STACK_DEPTH: FFC_GET(double(projection_.size())); break;
     case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth)); break;
@@ -566,8 +655,10 @@ void Context::PopMatrix() {
 // Each transform updates the double matrix exactly and the float one as Mesa's float maths does.
 void Context::Rotate(double angle, double x, double y, double z) {
   if (!outside_begin_end()) return;
+  // An axis shorter than 1e-4 leaves the matrix unchanged, in double as in float (Mesa's
+  // m_matrix.c rule, which GL 2.1 leaves open: the rotation of a zero axis is undefined).
   const double len = std::sqrt(x * x + y * y + z * z);
-  if (len > 0) stack().back() *= glm::rotate(glm::dmat4(1), glm::radians(angle), glm::dvec3(x, y, z) / len);
+  if (len > 1e-4) stack().back() *= glm::rotate(glm::dmat4(1), glm::radians(angle), glm::dvec3(x, y, z) / len);
   stack_f().back() = fmat::mul(stack_f().back(), fmat::rotation(float(angle), float(x), float(y), float(z)));
 }
 
@@ -601,22 +692,26 @@ void Context::Frustum(double l, double r, double b, double t, double n, double f
 void Context::Viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
   if (!outside_begin_end()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  viewport_ = {x, y, std::min(w, 16384), std::min(h, 16384)};
+  // Mesa clamps the size to GL_MAX_VIEWPORT_DIMS and the origin to its viewport bounds range
+  // [-2 max, 2 max - 1] (viewport.c; GL 2.1 says only the size is clamped). Ours does the same:
+  // window coordinates then stay far from the int range.
+  x = std::clamp(x, -2 * kMaxViewport, 2 * kMaxViewport - 1), y = std::clamp(y, -2 * kMaxViewport, 2 * kMaxViewport - 1);
+  viewport_ = {x, y, std::min(w, kMaxViewport), std::min(h, kMaxViewport)};
 }
 
 void Context::DepthRange(double n, double f) {
   if (!outside_begin_end()) return;
-  depth_range_ = {std::clamp(n, 0.0, 1.0), std::clamp(f, 0.0, 1.0)};
+  depth_range_ = {clamp01(n), clamp01(f)};
 }
 
 void Context::ClearColor(float r, float g, float b, float a) {
   if (!outside_begin_end()) return;
-  clear_color_ = glm::clamp(glm::vec4(r, g, b, a), 0.0f, 1.0f);
+  clear_color_ = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
 }
 
 void Context::ClearDepth(double d) {
   if (!outside_begin_end()) return;
-  clear_depth_ = std::clamp(d, 0.0, 1.0);
+  clear_depth_ = clamp01(d);
 }
 
 void Context::Clear(GLbitfield mask) {
@@ -634,6 +729,11 @@ void Context::flush_clear() {
   raster::clear(fb_, pending_clear_, workers());
   pending_clear_ = {};
 }
+
+// Nothing is left to do: every draw is finished when its call returns. Inside glBegin/glEnd both
+// are errors (GL 2.1 section 2.6.3).
+void Context::Finish() { outside_begin_end(); }
+void Context::Flush() { outside_begin_end(); }
 
 void Context::LineWidth(float w) {
   if (!outside_begin_end()) return;
@@ -659,11 +759,12 @@ lighting::Key Context::key() const {
     for (int f = 0; f < 2; ++f)
       specular |= glm::dvec3(l.specular) * glm::dvec3(materials_[f].specular) != glm::dvec3(0);
   }
-  if (color_material_ && (cm_mode_ == GL_SPECULAR)) specular = true;
+  const bool cm = cm_per_vertex();
+  if (cm && cm_mode_ == GL_SPECULAR) specular = true;
   if (model_.two_side) k.bits |= 1u << 24;
   if (model_.local_viewer) k.bits |= 1u << 25;
   if (model_.separate_specular) k.bits |= 1u << 26;
-  if (color_material_) k.bits |= 1u << 27;
+  if (cm) k.bits |= 1u << 27;
   if (normalize_) k.bits |= 1u << 28;
   if (rescale_normal_) k.bits |= 1u << 29;
   if (specular) k.extra |= 1u << 8;
@@ -673,13 +774,13 @@ lighting::Key Context::key() const {
 
 void Context::prepare_lighting() {
   lighting::ModelParams m = model_;
-  m.color_material = color_material_;
+  m.color_material = cm_per_vertex();
   const bool any_light = key().bits & 0xFF;
   if (any_light && model_.separate_specular)
     deviations_.insert("feedback reports only the primary colour under GL_SEPARATE_SPECULAR_COLOR");
-  if (any_light && model_.two_side && color_material_ && cm_face_ != GL_FRONT)
+  if (any_light && model_.two_side && m.color_material && cm_face_ != GL_FRONT)
     deviations_.insert("two-sided lighting with a GL_BACK colour material is broken in Mesa 22.3");
-  if (any_light && (model_.two_side || color_material_) &&
+  if (any_light && (model_.two_side || m.color_material) &&
       (materials_[0].shininess == 0 || (model_.two_side && materials_[1].shininess == 0)))
     deviations_.insert("shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1");
   // "Constants changed" re-prepares; the kernel for the pipeline's shape comes from the key.
@@ -698,6 +799,9 @@ void Context::Normal(double x, double y, double z) { normal_ = {x, y, z}; }
 
 void Context::Color(double r, double g, double b, double a) {
   color_ = {r, g, b, a};
+  if (in_begin_ && !color_varies_) color_varies_ = true, constants_dirty_ = true;
+  if (!spec_) return;  // tracked at the next flush (see update_color_material)
+  flushed_color_ = color_;
   if (!color_material_) return;
   // The tracked material parameters follow the current colour (their change is applied per
   // vertex by the lighting stage, so the constants stay valid).
@@ -717,8 +821,9 @@ void Context::Color(double r, double g, double b, double a) {
 void Context::update_vertex_constants() {
   if (!lighting_) return;
   if (constants_dirty_) prepare_lighting();
-  // Normals transform by the inverse transpose of the modelview's upper 3x3.
-  const glm::dmat4& mv = modelview_.back();
+  // Normals transform by the inverse transpose of the modelview's upper 3x3 (the float matrix in
+  // the float context: the one positions and lights use).
+  const glm::dmat4 mv = modelview();
   if (mv != normal_matrix_of_) {  // the inverse is per modelview, not per vertex
     normal_matrix_of_ = mv;
     // A singular modelview has no inverse: the transformed normal is undefined and the inverse's
@@ -795,7 +900,7 @@ void Context::process_vertex(const glm::dvec4& obj) {
 }
 
 // A large glDrawArrays / glDrawElements range: the vertices are independent, so both cores take
-// half each (the current normal and colour end as the last element sets them, as one by one).
+// half each.
 void Context::fetch_range(GLint first, GLint count) {
   update_vertex_constants();
   verts_.resize(size_t(count));
@@ -821,15 +926,6 @@ void Context::fetch_range(GLint first, GLint count) {
     zero[share] = z;
   });
   if (std::find(zero, zero + w.size(), true) != zero + w.size()) deviations_.insert(kZeroNormal);
-  const GLint last = first + count - 1;
-  if (normal_array_.enabled) {
-    const glm::dvec4 n = attribute(normal_array_, last, 3, true, glm::dvec4(0));
-    Normal(n.x, n.y, n.z);
-  }
-  if (color_array_.enabled) {
-    const glm::dvec4 c = attribute(color_array_, last, color_array_.size, true, glm::dvec4(1));
-    Color(c.r, c.g, c.b, c.a);
-  }
 }
 
 void Context::Vertex(double x, double y, double z, double w) {
@@ -840,6 +936,9 @@ void Context::Vertex(double x, double y, double z, double w) {
 void Context::Begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
+  flush_stored();
+  set_color_varies(false);
+  vertices_kept_ = !spec_;
   in_begin_ = true;
   prim_mode_ = mode;
   verts_.clear();
@@ -867,7 +966,10 @@ void Context::undefer() {
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = false;
-  if (!deferred_) return flush_primitive();
+  if (!deferred_) {
+    flush_primitive();
+    return flush_stored();
+  }
   deferred_ = false;
   // The kept vertices as client arrays for the triangle-list path (no GL call can change the
   // arrays between glBegin and glEnd, so borrowing them is safe).
@@ -878,6 +980,7 @@ void Context::End() {
   shade_range(0, GLint(deferred_pos_.size()));
   vertex_array_ = arrays[0], normal_array_ = arrays[1], color_array_ = arrays[2];
   draw_shaded(nullptr, deferred_pos_.size() / 3);
+  flush_stored();
 }
 
 // The array pointers check as Mesa's varray.c does: the stride first, then the type, then the size.
@@ -943,6 +1046,32 @@ void Context::ArrayElement(GLint i) {
   fetch_vertex(i);
 }
 
+// A draw from arrays: pending values copied first (Mesa's FLUSH_FOR_DRAW); the colour varies
+// per vertex when it comes from an array.
+void Context::begin_draw() {
+  flush_stored();
+  set_color_varies(color_array_.enabled);
+}
+
+void Context::set_color_varies(bool v) {
+  if (color_varies_ != v) color_varies_ = v, constants_dirty_ = true;
+}
+
+// Whether a draw of n vertices (and as many indices) fits in memory: each costs at most this many
+// bytes on any path. Over half of the machine's memory is GL_OUT_OF_MEMORY, before anything is
+// allocated: a vector of billions of vertices would fail, or worse, be granted and then touched
+// page by page until the kernel kills the process.
+bool Context::fits_in_memory(uint64_t n) {
+  constexpr uint64_t kBytesPerVertex = sizeof(raster::Vertex) + sizeof(raster::WindowVertex) + 64;
+  static const uint64_t budget = [] {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) / 2 : uint64_t(1) << 32;
+  }();
+  if (n <= budget / kBytesPerVertex) return true;
+  error(GL_OUT_OF_MEMORY);
+  return false;
+}
+
 // glDrawArrays and glDrawElements check as Mesa's draw_validate.c does: the count, then the mode,
 // then the index type.
 void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
@@ -951,7 +1080,8 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
   // draws nothing.
-  if (!vertex_array_.enabled || first < 0) return;
+  if (!vertex_array_.enabled || first < 0 || !fits_in_memory(uint64_t(count))) return;
+  begin_draw();
   prim_mode_ = mode;
   verts_.clear();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
@@ -959,10 +1089,12 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
     shade_range(first, count);
     return draw_shaded(nullptr, size_t(count) / 3);
   }
+  const CurrentValues kept = current_values();
   if (count >= kParallelVertices && threads_ > 1)
     fetch_range(first, count);
   else
     for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
+  restore(kept);
   flush_primitive();
 }
 
@@ -971,7 +1103,8 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
-  if (!vertex_array_.enabled || !indices) return;
+  if (!vertex_array_.enabled || !indices || !fits_in_memory(uint64_t(count))) return;
+  begin_draw();
   prim_mode_ = mode;
   verts_.clear();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
@@ -983,6 +1116,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     // The triangle-list path reads 32-bit indices in place when they start at 0.
     const auto* u = static_cast<const uint32_t*>(indices);
     index_range(u, size_t(count), lo, hi);
+    if (lo == 0 && !fits_in_memory(uint64_t(hi) + 1)) return;
     if (lo == 0) {
       shade_range(0, GLint(hi) + 1);
       return draw_shaded(u, size_t(count) / 3);
@@ -991,6 +1125,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   elements_.resize(size_t(count));
   for (GLsizei i = 0; i < count; ++i) elements_[i] = uint32_t(read_component(p, type, i, false));
   if (count > 0) index_range(elements_.data(), elements_.size(), lo, hi);
+  if (count > 0 && !fits_in_memory(uint64_t(hi - lo) + 1)) return elements_.clear();
   if (count > 0 && shaded_path(mode)) {
     shade_range(GLint(lo), GLint(hi - lo + 1));
     for (uint32_t& e : elements_) e -= lo;
@@ -999,10 +1134,12 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     return;
   }
   if (count > 0) {
+    const CurrentValues kept = current_values();
     if (hi - lo + 1 >= kParallelVertices && threads_ > 1)
       fetch_range(GLint(lo), GLint(hi - lo + 1));
     else
       for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i));
+    restore(kept);
     for (uint32_t& e : elements_) e -= lo;
   }
   flush_primitive();

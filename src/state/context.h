@@ -45,6 +45,10 @@ class Context {
   // The colour buffer, top row first (RGBA8), copied by the workers.
   void read_top_down(uint8_t* out);
   Precision precision() const { return precision_; }
+  // The spec mode follows GL 2.1 to the letter where Mesa 22.3 departs from it (docs/deviations.md);
+  // off (the default), the context reproduces Mesa's pictures, quirks included.
+  void set_spec(bool on) { spec_ = on; }
+  bool spec() const { return spec_; }
   // Off: every primitive takes the general path (vertex by vertex, then set-up triangles), which
   // the triangle-list path is tested against. The picture does not change.
   void set_triangle_lists(bool on) { triangle_lists_ = on; }
@@ -101,6 +105,8 @@ class Context {
   void ClearDepth(double d);
   void Clear(GLbitfield mask);
   void LineWidth(float w);
+  void Finish();
+  void Flush();
 
   void Begin(GLenum mode);
   void End();
@@ -114,6 +120,8 @@ class Context {
   void DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void ArrayElement(GLint i);
 
+  void RasterPos(double x, double y, double z, double w);
+  void DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels);
   void FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer);
   GLint RenderMode(GLenum mode);
   void ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels);
@@ -141,6 +149,9 @@ class Context {
   enum { kRound, kFromFloat, kFromDouble };
   int get_values(GLenum pname, GLdouble* out, int& normalized);
   std::vector<glm::dmat4>& stack();
+  // The modelview as this context's precision keeps it: lights, normals and glGet read this one.
+  glm::dmat4 modelview() const;
+  glm::dvec4 to_eye(const double* v, double w) const;
   std::vector<glm::mat4>& stack_f();
   void set_light(int i, GLenum pname, const double* v);
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
@@ -151,6 +162,7 @@ class Context {
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
                         bool* zero_normal) const;
   void fetch_range(GLint first, GLint count);
+  bool fits_in_memory(uint64_t vertices);  // false: GL_OUT_OF_MEMORY recorded
   // The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES, rendering, float):
   // array elements [first, first + count) lit into shaded_, then drawn from shared vertices.
   bool shaded_path(GLenum mode) const;
@@ -159,6 +171,14 @@ class Context {
   raster::State raster_state() const;
   raster::Workers& workers();
   void prepare_lighting();
+  // Colour material as Mesa tracks it (context.cpp, before Context::Color).
+  void update_color_material();
+  void copy_pending();
+  void flush_current();
+  void flush_stored();
+  void begin_draw();
+  void set_color_varies(bool v);
+  bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
   void flush_primitive();
 
   raster::Framebuffer fb_;
@@ -167,6 +187,7 @@ class Context {
   raster::ClearRequest pending_clear_;
   void flush_clear();
   Precision precision_;
+  bool spec_ = false;
   GLenum error_ = GL_NO_ERROR;
 
   // Enables
@@ -189,6 +210,7 @@ class Context {
   // The same stacks in float, computed as Mesa computes them (see float_matrix.h).
   std::vector<glm::mat4> modelview_f_{glm::mat4(1)}, projection_f_{glm::mat4(1)};
   glm::mat4 mvp_f_{1.0f};  // projection x modelview in float, refreshed as each primitive begins
+  static constexpr GLint kMaxViewport = 16384;  // GL_MAX_VIEWPORT_DIMS, as llvmpipe's
   static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for the modelview and projection stacks
   static constexpr size_t kMaxTextureStackDepth = 10;
   std::vector<glm::dmat4> texture_{glm::dmat4(1)};
@@ -201,6 +223,22 @@ class Context {
   // Current values and arrays
   glm::dvec3 normal_{0, 0, 1};
   glm::dvec4 color_{1, 1, 1, 1};
+  glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
+  bool color_varies_ = false;             // this draw's colour comes per vertex
+  bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
+  // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
+  // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
+  struct CurrentValues {
+    glm::dvec3 normal;
+    glm::dvec4 color;
+  };
+  CurrentValues current_values() const { return {normal_, color_}; }
+  void restore(const CurrentValues& v) { normal_ = v.normal, color_ = v.color; }
+  struct PendingMaterial {
+    glm::dvec4* dst;
+    glm::dvec4 value;
+  };
+  std::vector<PendingMaterial> pending_materials_;  // glMaterial values copied again at each flush
   ClientArray vertex_array_{false, 4, GL_FLOAT, 0, nullptr}, normal_array_{false, 3, GL_FLOAT, 0, nullptr},
       color_array_{false, 4, GL_FLOAT, 0, nullptr};
 
@@ -231,6 +269,13 @@ class Context {
   std::vector<glm::dvec3> deferred_normal_;
   std::vector<glm::dvec4> deferred_color_;
   raster::TriangleBins bins_;
+
+  // The current raster position (glRasterPos): window position and clip w, its colour.
+  struct RasterPosition {
+    bool valid = true;
+    glm::dvec4 window{0, 0, 0, 1};
+    glm::dvec4 color{1, 1, 1, 1};
+  } raster_pos_;
 
   // Feedback
   GLenum render_mode_ = GL_RENDER;

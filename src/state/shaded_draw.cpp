@@ -190,16 +190,6 @@ void Context::shade_range(GLint first, GLint count) {
           shares);
   }
   if (std::find(std::begin(zero), std::end(zero), true) != std::end(zero)) deviations_.insert(kZeroNormal);
-  // The current normal and colour end as the last element sets them, as one by one.
-  const GLint last = first + count - 1;
-  if (count > 0 && normal_array_.enabled) {
-    const glm::dvec4 n = attribute(normal_array_, last, 3, true, glm::dvec4(0));
-    Normal(n.x, n.y, n.z);
-  }
-  if (count > 0 && color_array_.enabled) {
-    const glm::dvec4 c = attribute(color_array_, last, color_array_.size, true, glm::dvec4(1));
-    Color(c.r, c.g, c.b, c.a);
-  }
 }
 
 void Context::read_top_down(uint8_t* out) {

@@ -39,8 +39,8 @@ void APIENTRY Enable(GLenum c) { FWD(Enable(c)); }
 void APIENTRY EnableClientState(GLenum a) { FWD(EnableClientState(a)); }
 void APIENTRY End() { FWD(End()); }
 void APIENTRY FeedbackBuffer(GLsizei s, GLenum t, GLfloat* b) { FWD(FeedbackBuffer(s, t, b)); }
-void APIENTRY Finish() {}
-void APIENTRY Flush() {}
+void APIENTRY Finish() { FWD(Finish()); }
+void APIENTRY Flush() { FWD(Flush()); }
 void APIENTRY FrontFace(GLenum m) { FWD(FrontFace(m)); }
 void APIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Frustum(l, r, b, t, n, f)); }
 void APIENTRY GetDoublev(GLenum p, GLdouble* v) { FWD(GetDoublev(p, v)); }
@@ -101,6 +101,8 @@ void APIENTRY PopMatrix() { FWD(PopMatrix()); }
 void APIENTRY PushMatrix() { FWD(PushMatrix()); }
 void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }
 GLint APIENTRY RenderMode(GLenum m) { return C() ? C()->RenderMode(m) : 0; }
+void APIENTRY RasterPos2f(GLfloat x, GLfloat y) { FWD(RasterPos(x, y, 0, 1)); }
+void APIENTRY DrawPixels(GLsizei w, GLsizei h, GLenum f, GLenum t, const GLvoid* p) { FWD(DrawPixels(w, h, f, t, p)); }
 void APIENTRY Rotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z) { FWD(Rotate(a, x, y, z)); }
 // glRotatef and friends build their matrices from float arguments; the double maths after that
 // differs from Mesa's float maths by rounding only.
@@ -119,15 +121,10 @@ void APIENTRY VertexPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FW
 void APIENTRY Viewport(GLint x, GLint y, GLsizei w, GLsizei h) { FWD(Viewport(x, y, w, h)); }
 #undef FWD
 
-// Putting a finished picture on a window is not this context's job (it has none): these names
-// resolve to nothing here.
-constexpr std::nullptr_t DrawPixels = nullptr, RasterPos2f = nullptr;
-
 template <typename F>
 void* entry(F* f) {
   return reinterpret_cast<void*>(f);
 }
-void* entry(std::nullptr_t) { return nullptr; }
 
 }  // namespace
 
