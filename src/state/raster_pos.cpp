@@ -131,8 +131,9 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
         else c[layout.channel[k]] = v;
       }
       for (int k = 0; k < 4; ++k) {
-        const double v = c[k] > 0 ? (c[k] < 1 ? c[k] : 1) : 0;  // NaN to 0
-        fb_.color[at * 4 + size_t(k)] = uint8_t(v * 255 + 0.5);
+        // To 8 bits as Mesa's float_to_unorm: in float, halves to even; NaN to 0.
+        const float v = float(c[k] > 0 ? (c[k] < 1 ? c[k] : 1) : 0);
+        fb_.color[at * 4 + size_t(k)] = uint8_t(std::lrint(v * 255.0f));
       }
     }
   }

@@ -1,0 +1,119 @@
+// Issue 10's state items against Mesa, each a row that failed before its fix: current values
+// after glEnd, glFinish/glFlush inside glBegin/glEnd, the viewport's bounds, NaN in the clamped
+// values, glRasterPos/glDrawPixels; and, soft alone, a draw too large for memory.
+#include <climits>
+#include <cmath>
+#include <limits>
+
+#include "harness.h"
+#include "state/context.h"
+
+namespace ffc::state_test {
+namespace {
+
+constexpr GLenum OK = GL_NO_ERROR, IO = GL_INVALID_OPERATION;
+const double kNaNd = std::numeric_limits<double>::quiet_NaN();
+const float kNaNf = std::numeric_limits<float>::quiet_NaN();
+
+class Issue10 : public ::testing::TestWithParam<Case> {};
+TEST_P(Issue10, MatchesMesa) { check_case(GetParam()); }
+
+// The picture, every byte, as observed values (16 x 16 RGBA).
+void observe_picture(const char* label) {
+  static GLubyte px[kWidth * kHeight * 4];
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  for (size_t i = 0; i < sizeof px; ++i) observe(std::string(label) + "[" + std::to_string(i) + "]", px[i]);
+}
+
+const GLubyte kImage[5 * 3 * 4] = {
+    255, 0, 0, 255,   0, 255, 0, 255,   0, 0, 255, 255,   10, 20, 30, 40,  50, 60, 70, 80,
+    90, 100, 110, 120, 130, 140, 150, 160, 170, 180, 190, 200, 210, 220, 230, 240, 250, 1, 2, 3,
+    4, 5, 6, 7,       8, 9, 10, 11,       12, 13, 14, 15,     16, 17, 18, 19,  20, 21, 22, 23};
+const GLfloat kFloatImage[3 * 2 * 3] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f,
+                                        1.5f, -0.5f, 0.25f, 0.33f, 0.66f, 0.99f, 0, 1, 0.5f};
+
+INSTANTIATE_TEST_SUITE_P(State, Issue10, ::testing::ValuesIn(std::vector<Case>{
+  // Item 3: a glColor / glNormal after the last glVertex of GL_TRIANGLES stays current.
+  {"ColourAfterLastVertexOfTriangles", nullptr, [] {
+     glBegin(GL_TRIANGLES);
+     glVertex3f(0, 0, 0), glVertex3f(1, 0, 0), glVertex3f(0, 1, 0);
+     glColor4f(0.1f, 0.2f, 0.3f, 0.4f);
+     glNormal3f(0.3f, 0.4f, 0.5f);
+     glEnd();
+   }, OK},
+  {"ColourAfterLastVertexOfTrianglesLit", [] { glEnable(GL_LIGHTING); glEnable(GL_LIGHT0); glEnable(GL_COLOR_MATERIAL); }, [] {
+     glBegin(GL_TRIANGLES);
+     glColor3f(0.9f, 0.9f, 0.9f);
+     glVertex3f(0, 0, 0), glVertex3f(1, 0, 0), glVertex3f(0, 1, 0);
+     glColor4f(0.1f, 0.2f, 0.3f, 0.4f);
+     glEnd();
+   }, OK},
+  // Item 4.
+  {"FinishInsideBeginEnd", nullptr, inside([] { glFinish(); }), IO},
+  {"FlushInsideBeginEnd", nullptr, inside([] { glFlush(); }), IO},
+  // Items 8 and 17: the origin clamped to [-32768, 32767], the size to 16384.
+  {"ViewportHugeOrigin", nullptr, [] { glViewport(INT_MAX, 0, 10, 10); }, OK},
+  {"ViewportHugeNegativeOriginAndSize", nullptr, [] { glViewport(-INT_MAX, -5000000, 100000, 100000); }, OK},
+  {"ViewportHugeThenPoint", [] { glViewport(INT_MAX, 0, 10, 10); }, [] {
+     glBegin(GL_POINTS);
+     glVertex3f(0, 0, 0);
+     glEnd();
+     observe_picture("picture");
+   }, OK},
+  {"DepthRangeNaN", nullptr, [] { glDepthRange(kNaNd, 0.5); }, OK},
+  {"ClearDepthNaN", nullptr, [] { glClearDepth(kNaNd); }, OK},
+  {"ClearColourNaN", nullptr, [] { glClearColor(kNaNf, 2, -1, 0.5f); }, OK},
+  // Item 9: glRasterPos2f / glDrawPixels draw on soft as on Mesa.
+  {"DrawPixelsAtCorner", nullptr, [] {
+     glRasterPos2f(-1, -1);
+     glDrawPixels(5, 3, GL_RGBA, GL_UNSIGNED_BYTE, kImage);
+     observe_picture("picture");
+   }, OK},
+  {"DrawPixelsRgbUnaligned", [] { glPixelStorei(GL_UNPACK_ALIGNMENT, 1); }, [] {
+     glRasterPos2f(-0.5f, 0.25f);
+     glDrawPixels(4, 3, GL_RGB, GL_UNSIGNED_BYTE, kImage);
+     observe_picture("picture");
+   }, OK},
+  {"DrawPixelsFloatRowLength", [] { glPixelStorei(GL_UNPACK_ROW_LENGTH, 3); }, [] {
+     glRasterPos2f(0.1f, -0.6f);
+     glDrawPixels(2, 2, GL_RGB, GL_FLOAT, kFloatImage);
+     observe_picture("picture");
+   }, OK},
+  {"DrawPixelsLuminanceSkip", [] { glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2); glPixelStorei(GL_UNPACK_SKIP_ROWS, 1); }, [] {
+     glRasterPos2f(0, 0);
+     glDrawPixels(3, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, kImage);
+     observe_picture("picture");
+   }, OK},
+  {"DrawPixelsRasterPosClipped", nullptr, [] {
+     glRasterPos2f(2, 0);  // outside the view volume: no fragments
+     glDrawPixels(5, 3, GL_RGBA, GL_UNSIGNED_BYTE, kImage);
+     observe_picture("picture");
+   }, OK},
+  {"DrawPixelsNegativeSize", nullptr, [] { glDrawPixels(-1, 3, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_VALUE},
+  {"DrawPixelsBadFormat", nullptr, [] { glDrawPixels(1, 1, GL_LIGHTING, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_ENUM},
+  {"DrawPixelsInsideBeginEnd", nullptr, inside([] { glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }), IO},
+}), case_name);
+
+// Item 10: a draw that cannot fit in memory is GL_OUT_OF_MEMORY, not an abort (Mesa would read
+// past the arrays; there is nothing of it to compare).
+TEST(Issue10Soft, HugeDrawsAreOutOfMemory) {
+  state::Context ctx(8, 8);
+  state::Context::make_current(&ctx);
+  static const GLfloat verts[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  ctx.VertexPointer(3, GL_FLOAT, 0, verts);
+  ctx.EnableClientState(GL_VERTEX_ARRAY);
+  ctx.DrawArrays(GL_TRIANGLES, 0, INT_MAX);
+  EXPECT_EQ(ctx.GetError(), GLenum(GL_OUT_OF_MEMORY));
+  const GLuint far_index[3] = {0, 1, 4000000000u};
+  ctx.DrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, far_index);
+  EXPECT_EQ(ctx.GetError(), GLenum(GL_OUT_OF_MEMORY));
+  const GLuint near_index[3] = {1, 2, 4000000000u};  // the other branch: indices not starting at 0
+  ctx.DrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, near_index);
+  EXPECT_EQ(ctx.GetError(), GLenum(GL_OUT_OF_MEMORY));
+  ctx.DrawArrays(GL_TRIANGLES, 0, 3);  // and the context still draws
+  EXPECT_EQ(ctx.GetError(), GLenum(GL_NO_ERROR));
+  state::Context::make_current(nullptr);
+}
+
+}  // namespace
+}  // namespace ffc::state_test
