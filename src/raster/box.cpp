@@ -60,27 +60,26 @@ namespace {
 
 // A triangle's planes broadcast for rows of sixteen pixels; per row, py Y once.
 struct RowPlanes {
-  __m512d z0, z1;
+  __m512 z0, z1, z2;
   __m512 iw0, iw1, c0[4], cx[4];
-  double z2;
   float iw2, cy[4];
   explicit RowPlanes(const BoxPlanes& p) {
     const int n = p.stride;
-    z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), z2 = p.z[2 * n];
+    z0 = _mm512_set1_ps(p.z[0]), z1 = _mm512_set1_ps(p.z[n]), z2 = _mm512_set1_ps(p.z[2 * n]);
     iw0 = _mm512_set1_ps(p.f[0]), iw1 = _mm512_set1_ps(p.f[n]), iw2 = p.f[2 * n];
     for (int k = 0; k < 4; ++k)
       c0[k] = _mm512_set1_ps(p.f[(3 + k) * n]), cx[k] = _mm512_set1_ps(p.f[(7 + k) * n]), cy[k] = p.f[(11 + k) * n];
   }
 };
 struct Row {
-  __m512d zy;
+  __m512 y_down;  // the row counted from the top, for depth
   __m512 iwy, cy[4];
   int* zrow;
   int* crow;
   Row(const RowPlanes& p, Framebuffer& fb, int y) {
     const double row = double(y) + 0.5;
     const float frow = float(row);
-    zy = _mm512_set1_pd(p.z2 * row), iwy = _mm512_set1_ps(p.iw2 * frow);
+    y_down = _mm512_set1_ps(float(fb.height - 1 - y)), iwy = _mm512_set1_ps(p.iw2 * frow);
     for (int k = 0; k < 4; ++k) cy[k] = _mm512_set1_ps(p.cy[k] * frow);
     zrow = reinterpret_cast<int*>(fb.depth.data() + size_t(y) * size_t(fb.width));
     crow = reinterpret_cast<int*>(fb.color.data()) + size_t(y) * size_t(fb.width);
@@ -94,9 +93,7 @@ uint64_t segment(const RowPlanes& p, const Row& r, int x, __mmask16 lanes, GLenu
   const __m512i px = _mm512_add_epi32(_mm512_set1_epi32(x), _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
   __mmask16 pass = lanes;
   if constexpr (D != kNoDepth) {
-    const __m512d x_lo = centre_pd(_mm512_castsi512_si256(px)), x_hi = centre_pd(_mm512_extracti64x4_epi64(px, 1));
-    const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(_mm512_add_pd(p.z0, _mm512_mul_pd(p.z1, x_lo)), r.zy))),
-                                         depth24x8(_mm512_add_pd(_mm512_add_pd(p.z0, _mm512_mul_pd(p.z1, x_hi)), r.zy)), 1);
+    const __m512i z = depth24x16(depth_at16(p.z0, p.z1, p.z2, _mm512_cvtepi32_ps(px), r.y_down));
     const __m512i stored = _mm512_maskz_loadu_epi32(lanes, r.zrow + x);
     pass = depth_test<D>(lanes, z, stored, depth_func);
     _mm512_mask_storeu_epi32(r.zrow + x, pass, z);

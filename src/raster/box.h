@@ -38,7 +38,7 @@ struct BoxEdges {
 // 15 floats: 1/w's p0, px, py, then colour / w as p0 (r, g, b, a), px (r, g, b, a), py (r, g, b, a).
 constexpr int kPlaneFloats = 15;
 struct BoxPlanes {
-  const double* z;
+  const float* z;  // llvmpipe's depth plane (span.h depth_plane)
   const float* f;
   int stride;
 };

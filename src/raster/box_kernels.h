@@ -19,14 +19,16 @@ namespace {
 __m512i lane_dx(bool wide) { return _mm512_and_si512(_mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15), _mm512_set1_epi32(wide ? 7 : 3)); }
 __m512i lane_dy(bool wide) { return _mm512_srli_epi32(_mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15), wide ? 3 : 2); }
 
-// depth24 of eight doubles.
-__m256i depth24x8(__m512d z) {
-  const __m512d c = _mm512_min_pd(_mm512_max_pd(z, _mm512_setzero_pd()), _mm512_set1_pd(1.0));  // NaN: 0
-  return _mm512_cvttpd_epi32(_mm512_add_pd(_mm512_mul_pd(c, _mm512_set1_pd(double(0xFFFFFF))), _mm512_set1_pd(0.5)));
+// depth24 of sixteen floats (the same instructions: max, min, multiply, round half to even).
+__m512i depth24x16(__m512 z) {
+  const __m512 c = _mm512_min_ps(_mm512_max_ps(z, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));  // NaN: 0
+  return _mm512_cvtps_epi32(_mm512_mul_ps(c, _mm512_set1_ps(16777215.0f)));
 }
 
-// Pixel centres of eight lanes as doubles.
-__m512d centre_pd(__m256i v) { return _mm512_add_pd(_mm512_cvtepi32_pd(v), _mm512_set1_pd(0.5)); }
+// depth_at of sixteen pixels: columns x, rows counted from the top y_down.
+__m512 depth_at16(__m512 z0, __m512 z1, __m512 z2, __m512 x, __m512 y_down) {
+  return _mm512_fmadd_ps(z2, y_down, _mm512_fmadd_ps(z1, x, z0));
+}
 
 // A block's rows in a buffer of 32-bit pixels: two of eight lanes (8x2) or four of four (4x4).
 // Lanes outside the mask are neither read (they may be another thread's rows, or past the
@@ -96,16 +98,13 @@ __attribute__((always_inline)) inline uint64_t shade(Framebuffer& fb, const BoxP
   // Centres: X = x + 0.5 and Y = y + 0.5 exactly, as lane offsets added to the block's corner.
   const __m512i dy = lane_dy(Wide);
   const __m512 fy_off = _mm512_add_ps(_mm512_cvtepi32_ps(dy), _mm512_set1_ps(0.5f));
-  const __m512d y_off_lo = centre_pd(_mm512_castsi512_si256(dy)), y_off_hi = centre_pd(_mm512_extracti64x4_epi64(dy, 1));
   // The parts of (p0 + px X) + py Y that depend on X only, once for the box.
   const int n = p.stride;
   const __m512i px = _mm512_add_epi32(_mm512_set1_epi32(xmin), lane_dx(Wide));
   const __m512 fx = _mm512_add_ps(_mm512_cvtepi32_ps(px), _mm512_set1_ps(0.5f));
-  const double z2s = p.z[2 * n];
-  const __m512d z0 = _mm512_set1_pd(p.z[0]), z1 = _mm512_set1_pd(p.z[n]), z2 = _mm512_set1_pd(z2s);
-  // 8x2: both halves are the same eight columns.
-  const __m512d zx_lo = _mm512_add_pd(z0, _mm512_mul_pd(z1, centre_pd(_mm512_castsi512_si256(px))));
-  const __m512d zx_hi = Wide ? zx_lo : _mm512_add_pd(z0, _mm512_mul_pd(z1, centre_pd(_mm512_extracti64x4_epi64(px, 1))));
+  const __m512 z0 = _mm512_set1_ps(p.z[0]), z1 = _mm512_set1_ps(p.z[n]), z2 = _mm512_set1_ps(p.z[2 * n]);
+  const __m512 zcol = _mm512_cvtepi32_ps(px);  // depth: pixel columns, rows from the top
+  const __m512 zrow_off = _mm512_cvtepi32_ps(_mm512_sub_epi32(_mm512_set1_epi32(fb.height - 1 - ymin), dy));
   const __m512 iwx = _mm512_add_ps(_mm512_set1_ps(p.f[0]), _mm512_mul_ps(_mm512_set1_ps(p.f[n]), fx));
   const __m512 iw2 = _mm512_set1_ps(p.f[2 * n]);
   __m512 cx[4], cy[4];
@@ -122,15 +121,8 @@ __attribute__((always_inline)) inline uint64_t shade(Framebuffer& fb, const BoxP
     const __mmask16 lanes = c.lanes[b];
     __mmask16 pass = lanes;
     if constexpr (D != kNoDepth) {
-      __m512d zy_lo, zy_hi;  // py Y
-      if constexpr (Wide) {  // one row a half: py Y once for it
-        zy_lo = _mm512_set1_pd(z2s * (double(y) + 0.5)), zy_hi = _mm512_set1_pd(z2s * (double(y) + 1.5));
-      } else {
-        const __m512d row = _mm512_set1_pd(double(y));
-        zy_lo = _mm512_mul_pd(z2, _mm512_add_pd(row, y_off_lo)), zy_hi = _mm512_mul_pd(z2, _mm512_add_pd(row, y_off_hi));
-      }
-      const __m512i z = _mm512_inserti64x4(_mm512_castsi256_si512(depth24x8(_mm512_add_pd(zx_lo, zy_lo))),
-                                           depth24x8(_mm512_add_pd(zx_hi, zy_hi)), 1);
+      const __m512 y_down = _mm512_sub_ps(zrow_off, _mm512_set1_ps(float(y - ymin)));  // exact: small integers
+      const __m512i z = depth24x16(depth_at16(z0, z1, z2, zcol, y_down));
       int* const zp = reinterpret_cast<int*>(fb.depth.data() + at);
       const __m512i stored = load_rows<Wide>(zp, pitch, lanes);
       pass = depth_test<D>(lanes, z, stored, depth_func);

@@ -100,7 +100,7 @@ __attribute__((target_clones("fma", "default"))) FloatWindow map_float(const glm
   const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
   const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
   FloatWindow w;
-  w.x = x, w.y = float(s.fb_height) - y_down, w.z = std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f);
+  w.x = x, w.y = float(s.fb_height) - y_down, w.y_down = y_down, w.z = std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f);
   // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
   w.sx = round_even((x - 0.5f) * 256.0f) + 128;
   w.sy = int64_t(s.fb_height - 1) * 256 - round_even((y_down - 0.5f) * 256.0f) + 128;
@@ -115,12 +115,13 @@ WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
     const glm::dvec3 ndc = glm::dvec3(clip) * w.inv_w;
     w.pos = {(ndc.x + 1) * 0.5 * vp[2] + vp[0], (ndc.y + 1) * 0.5 * vp[3] + vp[1],
              (ndc.z * (s.depth_range.y - s.depth_range.x) + (s.depth_range.y + s.depth_range.x)) * 0.5};
+    w.y_down = float(s.fb_height - w.pos.y);
     return w;
   }
   const FloatWindow f = map_float(glm::vec4(clip), s);
   w.pos = {f.x, f.y, f.z};
   w.snapped = true;
-  w.sx = f.sx, w.sy = f.sy;
+  w.sx = f.sx, w.sy = f.sy, w.y_down = f.y_down;
   return w;
 }
 
@@ -173,7 +174,7 @@ namespace {
 void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c, const State& s) {
   if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return;
   const size_t i = size_t(y) * fb.width + x;
-  const uint32_t zi = uint32_t(std::clamp(z, 0.0, 1.0) * double(0xFFFFFF) + 0.5);
+  const uint32_t zi = detail::depth24(float(z));  // converted as a triangle's
   if (s.depth_test) {
     if (!detail::depth_pass(s.depth_func, zi, fb.depth[i])) return;
     fb.depth[i] = zi;
@@ -207,6 +208,10 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
   const double inv_w[3] = {v[0]->w->inv_w, v[1]->w->inv_w, v[2]->w->inv_w};
   const glm::dvec4* const color[3] = {v[0]->color, v[1]->color, v[2]->color};
   const glm::dvec4* const sec[3] = {v[0]->sec, v[1]->sec, v[2]->sec};
+  const float x[3] = {float(pos[0].x), float(pos[1].x), float(pos[2].x)};
+  const float yd[3] = {v[0]->w->y_down, v[1]->w->y_down, v[2]->w->y_down};
+  const float z[3] = {float(pos[0].z), float(pos[1].z), float(pos[2].z)};
+  detail::depth_plane(x, yd, z, swapped, t.z);
   return detail::setup_planes(t, pos, inv_w, color, sec, s.flat, s.add_secondary);
 }
 

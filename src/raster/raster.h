@@ -77,6 +77,7 @@ struct WindowVertex {
   glm::dvec3 pos;    // x, y, z in window coordinates
   glm::dvec4 color;  // the colour chosen for the facing
   double inv_w;      // 1 / clip w, for perspective-correct interpolation
+  float y_down = 0;  // y counted down from the framebuffer's top, as llvmpipe has it (depth_plane)
   glm::dvec4 sec;
   bool snapped = false;  // sx, sy hold the position in 1/256 pixel (pixel centres at +128)
   int64_t sx = 0, sy = 0;
@@ -85,6 +86,7 @@ struct WindowVertex {
 // The float path of map_to_window: window x, y (GL rows, up), z, and the snapped position.
 struct FloatWindow {
   float x, y, z;
+  float y_down;  // y counted from the top, before GL's flip: what llvmpipe's setup reads
   int64_t sx, sy;
 };
 FloatWindow map_float(const glm::vec4& clip, const State& s);
@@ -120,9 +122,10 @@ struct Triangle {
   int64_t x[3], y[3], area;  // snapped, counter-clockwise
   bool inclusive[3];         // edge i (from vertex i+1 to i+2) owns the pixels exactly on it
   int xmin, xmax, ymin, ymax;
-  // Planes: value at pixel centre (X, Y) = p0 + px X + py Y. Depth in double (24 bits must
-  // survive), 1/w and colour / w (secondary colour summed in) in float, as llvmpipe's.
-  double z[3];
+  // Planes: value at pixel centre (X, Y) = p0 + px X + py Y: 1/w and colour / w (secondary colour
+  // summed in) in float, as llvmpipe's. Depth: llvmpipe's own plane, {a0, dz/dx, dz/dy} at pixel
+  // (X, row from the top) (span.h depth_plane, depth_at).
+  float z[3];
   float inv_w[3], c0[4], cx[4], cy[4];  // one after another: the box kernel reads them as 15 floats
 };
 

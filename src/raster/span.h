@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstring>
 
 #include "raster/box.h"
@@ -45,11 +46,42 @@ inline bool depth_pass(GLenum func, uint32_t z, uint32_t stored) {
   }
 }
 
-// A depth in [0, 1] (clamped; NaN to 0) as a 24-bit value, without branches: maxsd gives its
-// second operand, 0, when the first is NaN.
-inline uint32_t depth24(double z) {
-  const __m128d c = _mm_min_sd(_mm_max_sd(_mm_set_sd(z), _mm_setzero_pd()), _mm_set_sd(1.0));
-  return uint32_t(_mm_cvttsd_si32(_mm_add_sd(_mm_mul_sd(c, _mm_set_sd(double(0xFFFFFF))), _mm_set_sd(0.5))));
+// Depth as llvmpipe computes it (Mesa 22.3, 24-bit unorm buffer): the fragment's z in float from
+// a plane through the window positions (depth_plane), clamped to [0, 1] (lp_state_fs.c
+// lp_build_depth_clamp; a NaN to 0: maxss gives its second operand), scaled by 2^24 - 1 in float
+// and rounded half to even (lp_bld_conv.c lp_build_clamped_float_to_unsigned_norm, the branch for
+// 24 bits = float's mantissa + 1). Ties between triangles are decided by these exact bits, so every
+// copy (box_kernels.h depth24x16, setup8 in triangle_list.cpp) computes the same.
+inline uint32_t depth24(float z) {
+  const __m128 c = _mm_min_ss(_mm_max_ss(_mm_set_ss(z), _mm_setzero_ps()), _mm_set_ss(1.0f));
+  return uint32_t(_mm_cvtss_si32(_mm_mul_ss(c, _mm_set_ss(16777215.0f))));
+}
+
+// The depth plane of a triangle as llvmpipe's setup builds it (lp_state_setup.c, init_args and
+// calc_coef4), in float, operation by operation: positions with y counted down from the top row
+// (the framebuffer's, as llvmpipe sees it), relative to the pixel centre (x0 - 0.5). Returns
+// {a0, dz/dx, dz/dy}; the value at pixel (X, row-from-top Y) is depth_at. llvmpipe takes the
+// vertices in its own order: (v0, v1, v2) when counter-clockwise on the screen (GL's window), (v1,
+// v0, v2) otherwise (lp_setup_tri.c triangle_both, last vertex provoking). Given the vertices in
+// our counter-clockwise order (vertices 1 and 2 exchanged when `swapped`), that is a rotation.
+inline void depth_plane(const float (&x)[3], const float (&yd)[3], const float (&z)[3], bool swapped, float (&out)[3]) {
+  const int i0 = swapped ? 2 : 0, i1 = swapped ? 0 : 1, i2 = swapped ? 1 : 2;
+  const float x0 = x[i0], y0 = yd[i0], z0 = z[i0], x1 = x[i1], y1 = yd[i1], z1 = z[i1];
+  const float x2 = x[i2], y2 = yd[i2], z2 = z[i2];
+  const float x0c = x0 - 0.5f, y0c = y0 - 0.5f;
+  const float dx01 = x0 - x1, dy01 = y0 - y1, dx20 = x2 - x0, dy20 = y2 - y0;
+  const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
+  const float dx20o = dx20 * ooa, dy20o = dy20 * ooa, dx01o = dx01 * ooa, dy01o = dy01 * ooa;
+  const float da01 = z0 - z1, da20 = z2 - z0;
+  const float dzdx = da01 * dy20o - da20 * dy01o;
+  const float dzdy = da20 * dx01o - da01 * dx20o;
+  out[0] = z0 - (dzdx * x0c + dzdy * y0c), out[1] = dzdx, out[2] = dzdy;
+}
+
+// The fragment's depth at pixel column X, row Y counted from the top: two fused multiply-adds, as
+// lp_bld_interp.c's interp_attrib_linear (llvm.fmuladd, fused on a CPU with FMA).
+inline float depth_at(const float* z, int stride, float x, float y_down) {
+  return std::fma(z[2 * stride], y_down, std::fma(z[stride], x, z[0]));
 }
 
 // Solves value = p0 + p1 x + p2 y through three points once per triangle; each attribute is then
@@ -101,15 +133,14 @@ inline bool setup_edges(Triangle& t, int fb_width, int fb_height, bool* swapped)
   return true;
 }
 
-// The planes of depth, 1/w and colour / w (secondary summed in) from the unsnapped positions, as
+// The planes of 1/w and colour / w (secondary summed in) from the unsnapped positions, as
 // llvmpipe builds them; flat: the colour as a constant, no rounding through 1/w. False when a
 // plane leaves float (1/w near float's limits over a tiny area): not drawn rather than drawn from
 // infinities. `color` and `sec` are per vertex (sec unread without add_secondary).
 template <typename C>
 bool setup_planes(Triangle& t, const glm::dvec3 (&pos)[3], const double (&inv_w)[3], const C* const (&color)[3],
                   const C* const (&sec)[3], bool flat, bool add_secondary) {
-  const PlaneSolver make(pos);
-  make(pos[0].z, pos[1].z, pos[2].z, t.z);
+  const PlaneSolver make(pos);  // depth apart: depth_plane
   auto channel = [&](int i, int k) {
     return double((*color[i])[k]) + (add_secondary && k < 3 ? double((*sec[i])[k]) : 0.0);
   };
@@ -171,8 +202,8 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       return true;
     }
     // py Y once for the row: the same products, so the same bits.
-    const double y = py + 0.5, zy = t.z[2] * y;
-    const float fy = float(y), iwy = t.inv_w[2] * fy;
+    const double y = py + 0.5;
+    const float fy = float(y), iwy = t.inv_w[2] * fy, y_down = float(fb.height - 1 - py);
     const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
     uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
     uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
@@ -180,7 +211,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       const double x = px + 0.5;
       bool pass = true;
       if constexpr (D != kNoDepth) {
-        const uint32_t zi = depth24(t.z[0] + t.z[1] * x + zy);
+        const uint32_t zi = depth24(depth_at(t.z, 1, float(px), y_down));
         if constexpr (D == kLess) pass = zi < *zp;
         else if constexpr (D == kLequal) pass = zi <= *zp;
         else pass = depth_pass(depth_func, zi, *zp);

@@ -33,7 +33,7 @@ void map_one(ShadedVertices& vs, size_t i, const State& s) {
   const FloatWindow w = map_float(clip, s);
   constexpr int64_t kLimit = int64_t(1) << 30;  // inside, but too far out for 32-bit coordinates: clipped
   if (w.sx < -kLimit || w.sx > kLimit || w.sy < -kLimit || w.sy > kLimit) return;
-  v.x = w.x, v.y = w.y, v.z = w.z;
+  v.x = w.x, v.y = w.y_down, v.z = w.z;
   vs.snapped[i] = {int32_t(w.sx), int32_t(w.sy)};
 }
 
@@ -75,7 +75,6 @@ bool map_four(ShadedVertices& vs, size_t i, const State& s) {
   const __m128 x = F::fma(nx, _mm_set1_ps(hw), _mm_set1_ps(float(vp[0]) + hw));
   const __m128 y_down = F::fma(ny, _mm_set1_ps(-hh), _mm_set1_ps(fbh - (float(vp[1]) + hh)));
   const __m128 z = F::fma(nz, _mm_set1_ps((df - dn) * 0.5f), _mm_set1_ps((df + dn) * 0.5f));
-  const __m128 y = _mm_sub_ps(_mm_set1_ps(fbh), y_down);
   const __m128 sxf = _mm_mul_ps(_mm_sub_ps(x, _mm_set1_ps(0.5f)), _mm_set1_ps(256.0f));
   const __m128 syf = _mm_mul_ps(_mm_sub_ps(y_down, _mm_set1_ps(0.5f)), _mm_set1_ps(256.0f));
   // Rounded half to even (the SSE default) as map_float's cvtss2si, where both stay well within
@@ -85,7 +84,7 @@ bool map_four(ShadedVertices& vs, size_t i, const State& s) {
   if (_mm_movemask_ps(_mm_andnot_ps(out, far))) return false;
   const __m128i sx = _mm_add_epi32(_mm_cvtps_epi32(sxf), _mm_set1_epi32(128));
   const __m128i sy = _mm_sub_epi32(_mm_set1_epi32((s.fb_height - 1) * 256 + 128), _mm_cvtps_epi32(syf));
-  __m128 px = x, py = y, pz = z, pw = W;
+  __m128 px = x, py = y_down, pz = z, pw = W;
   _MM_TRANSPOSE4_PS(px, py, pz, pw);
   const __m128 rows[4] = {px, py, pz, pw};
   alignas(16) int32_t ax[4], ay[4];
@@ -145,7 +144,7 @@ void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const detail::
   const WindowPolygon w = clip_and_map(prim, 3, l.s, &prim[2], false);
   for (size_t k = 1; k + 1 < w.size(); ++k) {
     Triangle t;
-    if (!setup(w[0], w[k], w[k + 1], l.s, t)) continue;
+    if (!setup(w[k], w[k + 1], w[0], l.s, t)) continue;  // Mesa's clipper's fan (context.cpp)
     t.xmin = std::max(t.xmin, 0), t.ymin = std::max(t.ymin, 0);
     t.xmax = std::min(t.xmax, l.fb.width - 1), t.ymax = std::min(t.ymax, l.fb.height - 1);
     if (t.xmin <= t.xmax && t.ymin <= t.ymax)
@@ -155,10 +154,11 @@ void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const detail::
 
 // setup_planes for a smooth triangle without secondary colour, two values per SSE2 register: the
 // same operations in the same order as detail::PlaneSolver, so the same bits, in fewer steps.
-bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
-  const double X0 = v[0]->x, Y0 = v[0]->y;
-  const double x1 = double(v[1]->x) - X0, y1 = double(v[1]->y) - Y0;
-  const double x2 = double(v[2]->x) - X0, y2 = double(v[2]->y) - Y0;
+bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], float fbh, bool swapped) {
+  const float up[3] = {fbh - v[0]->y, fbh - v[1]->y, fbh - v[2]->y};  // GL's y, as map_float's
+  const double X0 = v[0]->x, Y0 = up[0];
+  const double x1 = double(v[1]->x) - X0, y1 = double(up[1]) - Y0;
+  const double x2 = double(v[2]->x) - X0, y2 = double(up[2]) - Y0;
   const double det = x1 * y2 - x2 * y1;
   const __m128d inv = _mm_set1_pd(det != 0 ? 1 / det : 0);
   const __m128d vx0 = _mm_set1_pd(X0), vy0 = _mm_set1_pd(Y0), vx1 = _mm_set1_pd(x1), vy1 = _mm_set1_pd(y1),
@@ -174,13 +174,14 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
   const __m128d w01 = _mm_div_pd(_mm_set1_pd(1), _mm_set_pd(v[1]->w, v[0]->w));
   const __m128d w2 = _mm_div_sd(_mm_set_sd(1), _mm_set_sd(v[2]->w));
   const __m128d w[3] = {_mm_unpacklo_pd(w01, w01), _mm_unpackhi_pd(w01, w01), _mm_unpacklo_pd(w2, w2)};
-  solve(_mm_unpacklo_pd(_mm_set_sd(v[0]->z), w[0]), _mm_unpacklo_pd(_mm_set_sd(v[1]->z), w[1]),
-        _mm_unpacklo_pd(_mm_set_sd(v[2]->z), w[2]), p);
-  double zw[2];
+  solve(w[0], w[1], w[2], p);  // 1/w (twice)
+  double pw[2];
   for (int i = 0; i < 3; ++i) {
-    _mm_storeu_pd(zw, p[i]);
-    t.z[i] = zw[0], t.inv_w[i] = float(zw[1]);
+    _mm_storeu_pd(pw, p[i]);
+    t.inv_w[i] = float(pw[1]);
   }
+  const float x[3] = {v[0]->x, v[1]->x, v[2]->x}, yd[3] = {v[0]->y, v[1]->y, v[2]->y}, z[3] = {v[0]->z, v[1]->z, v[2]->z};
+  detail::depth_plane(x, yd, z, swapped, t.z);
   // Colour / w, (r, g) and (b, a) apart; the halves joined in registers (storing them to memory
   // and loading them as one stalls store forwarding).
   __m128d half[2][3];
@@ -206,7 +207,7 @@ bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3]) {
 // bit what setup_edges, box_edges and smooth_planes give one triangle.
 struct Setup8 {
   alignas(64) int32_t edges[detail::kEdgeFields][8];
-  alignas(64) double z[3][8];
+  alignas(64) float z[3][8];  // depth_plane's
   alignas(64) float f[detail::kPlaneFloats][8];
   unsigned box;   // lanes for the box kernel: box at most 8x8, vertex extents below 31 pixels
   unsigned none;  // lanes that cover no pixel centre
@@ -295,12 +296,31 @@ void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, 
   const __m256i k1 = _mm256_set1_epi32(1);
   out.tiny = out.box & _mm256_cmple_epi32_mask(_mm256_sub_epi32(xmax, xmin), k1) & _mm256_cmple_epi32_mask(_mm256_sub_epi32(ymax, ymin), k1);
   // Window positions and colours: a vertex a row, made a lane; then in double.
-  __m512d v[3][8];  // x, y, z, w, r, g, b, a
+  __m512d v[3][8];  // x, y (GL's, up), z, w, r, g, b, a
+  __m256 fx[3], fyd[3], fz[3];  // in float for depth, y counted down
   for (int c = 0; c < 3; ++c) {
     __m256 r[8];
     for (int lane = 0; lane < 8; ++lane) r[lane] = _mm256_load_ps(&vs.hot[corner[c][lane]].x);
     transpose8(r);
+    fx[c] = r[0], fyd[c] = r[1], fz[c] = r[2];
+    r[1] = _mm256_sub_ps(_mm256_set1_ps(float(fb_h)), r[1]);  // as map_float's GL y
     for (int a = 0; a < 8; ++a) v[c][a] = _mm512_cvtps_pd(r[a]);
+  }
+  {  // detail::depth_plane, lane by lane: llvmpipe's order is (0, 1, 2), or (1, 0, 2) where swapped
+    const __m256 x0 = _mm256_mask_blend_ps(swap, fx[0], fx[1]), x1 = _mm256_mask_blend_ps(swap, fx[1], fx[0]), x2 = fx[2];
+    const __m256 y0 = _mm256_mask_blend_ps(swap, fyd[0], fyd[1]), y1 = _mm256_mask_blend_ps(swap, fyd[1], fyd[0]), y2 = fyd[2];
+    const __m256 z0 = _mm256_mask_blend_ps(swap, fz[0], fz[1]), z1 = _mm256_mask_blend_ps(swap, fz[1], fz[0]), z2 = fz[2];
+    const __m256 half = _mm256_set1_ps(0.5f);
+    const __m256 x0c = _mm256_sub_ps(x0, half), y0c = _mm256_sub_ps(y0, half);
+    const __m256 dx01 = _mm256_sub_ps(x0, x1), dy01 = _mm256_sub_ps(y0, y1), dx20 = _mm256_sub_ps(x2, x0), dy20 = _mm256_sub_ps(y2, y0);
+    const __m256 ooa = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sub_ps(_mm256_mul_ps(dx01, dy20), _mm256_mul_ps(dy01, dx20)));
+    const __m256 dx20o = _mm256_mul_ps(dx20, ooa), dy20o = _mm256_mul_ps(dy20, ooa), dx01o = _mm256_mul_ps(dx01, ooa),
+                 dy01o = _mm256_mul_ps(dy01, ooa);
+    const __m256 da01 = _mm256_sub_ps(z0, z1), da20 = _mm256_sub_ps(z2, z0);
+    const __m256 dzdx = _mm256_sub_ps(_mm256_mul_ps(da01, dy20o), _mm256_mul_ps(da20, dy01o));
+    const __m256 dzdy = _mm256_sub_ps(_mm256_mul_ps(da20, dx01o), _mm256_mul_ps(da01, dx20o));
+    _mm256_store_ps(out.z[0], _mm256_sub_ps(z0, _mm256_add_ps(_mm256_mul_ps(dzdx, x0c), _mm256_mul_ps(dzdy, y0c))));
+    _mm256_store_ps(out.z[1], dzdx), _mm256_store_ps(out.z[2], dzdy);
   }
   for (int a = 0; a < 8; ++a) {
     const __m512d v1 = _mm512_mask_blend_pd(swap, v[1][a], v[2][a]);
@@ -313,25 +333,21 @@ void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, 
   const __m512d det = _mm512_sub_pd(_mm512_mul_pd(x1, y2), _mm512_mul_pd(x2, y1));
   const __m512d one = _mm512_set1_pd(1);
   const __m512d inv = _mm512_maskz_div_pd(_mm512_cmp_pd_mask(det, _mm512_setzero_pd(), _CMP_NEQ_UQ), one, det);
-  __m512d a[3][6];  // z, 1/w, r/w, g/w, b/w, a/w
+  __m512d a[3][6];  // (depth apart), 1/w, r/w, g/w, b/w, a/w
   for (int c = 0; c < 3; ++c) {
     const __m512d iw = _mm512_div_pd(one, v[c][3]);
-    a[c][0] = v[c][2], a[c][1] = iw;
+    a[c][1] = iw;
     for (int k = 0; k < 4; ++k) a[c][2 + k] = _mm512_mul_pd(v[c][4 + k], iw);
   }
   const __m256 fzero = _mm256_setzero_ps();
   __m256 probe = fzero;
-  for (int q = 0; q < 6; ++q) {
+  for (int q = 1; q < 6; ++q) {
     const __m512d d1 = _mm512_sub_pd(a[1][q], a[0][q]), d2 = _mm512_sub_pd(a[2][q], a[0][q]);
     const __m512d p1 = _mm512_mul_pd(_mm512_sub_pd(_mm512_mul_pd(d1, y2), _mm512_mul_pd(d2, y1)), inv);
     const __m512d p2 = _mm512_mul_pd(_mm512_sub_pd(_mm512_mul_pd(x1, d2), _mm512_mul_pd(x2, d1)), inv);
     const __m512d p0 = _mm512_sub_pd(_mm512_sub_pd(a[0][q], _mm512_mul_pd(p1, x0)), _mm512_mul_pd(p2, y0));
     const __m512d p[3] = {p0, p1, p2};
     for (int m = 0; m < 3; ++m) {
-      if (q == 0) {
-        _mm512_store_pd(out.z[m], p[m]);
-        continue;
-      }
       const __m256 f = _mm512_cvtpd_ps(p[m]);
       probe = _mm256_add_ps(probe, _mm256_mul_ps(f, fzero));  // x * 0 is NaN unless x is finite
       _mm256_store_ps(out.f[q == 1 ? m : 3 + 4 * m + (q - 2)], f);
@@ -377,13 +393,15 @@ void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)
   auto planes = [&] {
     const bool use_back = back && s.two_side;
     const ShadedVertex* const v[3] = {&l.vs.hot[order[0]], &l.vs.hot[order[1]], &l.vs.hot[order[2]]};
-    if (!s.flat && !s.add_secondary && !use_back) return smooth_planes(t, v);
+    if (!s.flat && !s.add_secondary && !use_back) return smooth_planes(t, v, float(s.fb_height), swapped);
+    const float x[3] = {v[0]->x, v[1]->x, v[2]->x}, yd[3] = {v[0]->y, v[1]->y, v[2]->y}, z[3] = {v[0]->z, v[1]->z, v[2]->z};
+    detail::depth_plane(x, yd, z, swapped, t.z);
     glm::dvec3 pos[3];
     double inv_w[3];
     const glm::vec4* c[3];
     const glm::vec4* sc[3];
     for (int i = 0; i < 3; ++i) {
-      pos[i] = {v[i]->x, v[i]->y, v[i]->z};
+      pos[i] = {v[i]->x, float(s.fb_height) - v[i]->y, v[i]->z};
       inv_w[i] = 1 / double(v[i]->w);
       const size_t from = s.flat ? vi[2] : order[i];  // flat: the provoking vertex's colours
       c[i] = use_back ? &l.vs.back[from] : &l.vs.hot[from].color;

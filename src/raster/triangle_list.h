@@ -16,7 +16,8 @@ namespace ffc::raster {
 // A vertex after the vertex stage, as setup reads it: 32 bytes, two to a cache line. Float path
 // only: the window position is map_to_window's with State::float_window, bit for bit.
 struct alignas(32) ShadedVertex {
-  float x, y, z;    // window position
+  float x, y, z;    // window position, y counted down from the top as llvmpipe has it (GL's y is
+                    // fb_height - y in float, as map_float computes it)
   float w;          // clip w (1/w is taken in double, as map_to_window does)
   glm::vec4 color;  // primary colour for the front (flat: its own; the provoking one is chosen later)
 };

@@ -1236,7 +1236,7 @@ void Context::flush_primitive() {
     if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w.begin(), w.size());
     raster::Triangle t;
     for (size_t k = 1; k + 1 < w.size(); ++k)
-      if (raster::setup(w[0], w[k], w[k + 1], rs, t)) out.push_back(t);
+      if (raster::setup(w[k], w[k + 1], w[0], rs, t)) out.push_back(t);
   };
   Scratch scratch;
   auto emit = [&](std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
