@@ -30,7 +30,8 @@ class Backend {
 };
 
 // "mesa" (Mesa's fixed-function pipeline, offscreen), "soft" (ours, float) or "soft-double" (ours,
-// the double reference). Throws std::invalid_argument otherwise.
+// the double reference), each of ours also as "-spec" (GL 2.1 to the letter where Mesa departs from
+// it, docs/deviations.md). Throws std::invalid_argument otherwise.
 std::unique_ptr<Backend> make(const std::string& name);
 
 }  // namespace ffc::backends

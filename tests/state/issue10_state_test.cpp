@@ -115,5 +115,22 @@ TEST(Issue10Soft, HugeDrawsAreOutOfMemory) {
   state::Context::make_current(nullptr);
 }
 
+// The spec mode tracks the current colour at glEnable(GL_COLOR_MATERIAL), as GL 2.1 section
+// 2.14.3 says; the default keeps a glMaterial value sent before it, as Mesa does (docs/deviations.md).
+TEST(Issue10Soft, SpecModeTracksColourMaterialAtOnce) {
+  for (bool spec : {false, true}) {
+    state::Context ctx(8, 8);
+    ctx.set_spec(spec);
+    const GLfloat m[4] = {0.2f, 0.3f, 0.4f, 1};
+    ctx.Materialfv(GL_FRONT, GL_DIFFUSE, m);
+    ctx.ColorMaterial(GL_FRONT, GL_DIFFUSE);
+    ctx.Enable(GL_COLOR_MATERIAL);
+    GLfloat d[4];
+    ctx.GetMaterialfv(GL_FRONT, GL_DIFFUSE, d);
+    EXPECT_FLOAT_EQ(d[0], spec ? 1.0f : 0.2f) << (spec ? "spec" : "mesa");
+    EXPECT_FLOAT_EQ(d[2], spec ? 1.0f : 0.4f) << (spec ? "spec" : "mesa");
+  }
+}
+
 }  // namespace
 }  // namespace ffc::state_test

@@ -17,6 +17,7 @@ void SoftBackend::begin(int width, int height) {
     throw std::runtime_error("soft: framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
                              " is outside 1..16384");
   context_ = std::make_unique<state::Context>(width, height, precision_);
+  context_->set_spec(spec_);
   resume();
 }
 
