@@ -116,12 +116,14 @@ WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
     w.pos = {(ndc.x + 1) * 0.5 * vp[2] + vp[0], (ndc.y + 1) * 0.5 * vp[3] + vp[1],
              (ndc.z * (s.depth_range.y - s.depth_range.x) + (s.depth_range.y + s.depth_range.x)) * 0.5};
     w.y_down = float(s.fb_height - w.pos.y);
+    w.fx = float(w.pos.x);
     return w;
   }
   const FloatWindow f = map_float(glm::vec4(clip), s);
   w.pos = {f.x, f.y, f.z};
   w.snapped = true;
   w.sx = f.sx, w.sy = f.sy, w.y_down = f.y_down;
+  w.fx = f.x;
   return w;
 }
 
@@ -237,28 +239,179 @@ void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, 
   workers.run(work);
 }
 
-void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s) {
-  // llvmpipe draws a line as a parallelogram one pixel wide across its major axis, rasterized with
-  // the triangle rules (left and bottom edges inclusive). Along the major axis a pixel belongs to
-  // the line when its centre lies in [start, end): the diamond-exit rule, for thin lines.
-  // Across it, a centre c is inside when c is in [p - 0.5, p + 0.5), that is pixel ceil(p) - 1.
-  const double dx = b.pos.x - a.pos.x, dy = b.pos.y - a.pos.y;
-  const bool x_major = std::abs(dx) >= std::abs(dy);
-  const double a_major = x_major ? a.pos.x : a.pos.y, b_major = x_major ? b.pos.x : b.pos.y;
-  const double d_major = b_major - a_major;
-  if (d_major == 0) return;
-  const double lo = std::min(a_major, b_major), hi = std::max(a_major, b_major);
-  for (int i = int(std::ceil(lo - 0.5)); i + 0.5 < hi; ++i) {
-    const double c = i + 0.5;
-    if (c < lo) continue;
-    const double t = (c - a_major) / d_major;
-    const double minor = x_major ? a.pos.y + dy * t : a.pos.x + dx * t;
-    const int j = int(std::ceil(minor)) - 1;
-    const int px = x_major ? i : j, py = x_major ? j : i;
-    glm::dvec4 col = a.color + (b.color - a.color) * t;
-    if (s.add_secondary) col += glm::dvec4(glm::dvec3(a.sec + (b.sec - a.sec) * t), 0);
-    write_fragment(fb, px, py, a.pos.z + (b.pos.z - a.pos.z) * t, col, s);
+namespace {
+
+// llvmpipe's subpixel_snap: util_iround(256 * v), which on x86-64 rounds half away from zero by
+// adding 0.5 in float (u_math.h), unlike the triangle path's round-to-even (see map_float).
+int64_t snap_away(float v) {
+  const float f = v * 256.0f;
+  if (!(std::fabs(f) < 0x1p60f)) return 0;  // far outside; the callers clip first
+  return f >= 0 ? int64_t(f + 0.5f) : int64_t(f - 0.5f);
+}
+
+glm::dvec4 summed(const glm::dvec4& c, const glm::dvec4& sec, const State& s) {
+  return s.add_secondary ? c + glm::dvec4(glm::dvec3(sec), 0) : c;
+}
+
+}  // namespace
+
+void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s) {
+  // GL 2.1 section 3.3.1 (non-antialiased points), as llvmpipe's legacy-point path computes it in
+  // 1/256 pixel, rows counted down: size rounded to a whole number of pixels, at least 1 (half
+  // rounds down: (256 size + 127) truncated); the square's first column and row from the snapped
+  // centre (an odd size around the pixel holding it, an even one around the nearest pixel corner).
+  // Rows come one step lower in 1/256 pixel (llvmpipe's bottom-edge `adj`), so a centre exactly
+  // on a row boundary falls in the row above it in GL terms.
+  const float size = std::min(s.point_size, 255.0f);  // LP_MAX_POINT_WIDTH; NaN: 1 below
+  const int64_t width = std::max<int64_t>(1, ((snap_away(size > 0 ? size : 1) + 127) & ~int64_t(255)) >> 8);
+  const int64_t sx = snap_away(v.fx), sy = snap_away(v.y_down) - 1;
+  int64_t x0, y0;
+  if (width & 1) {
+    x0 = (sx >> 8) - (width - 1) / 2, y0 = (sy >> 8) - (width - 1) / 2;
+  } else {
+    x0 = ((sx + 128) >> 8) - width / 2, y0 = ((sy + 128) >> 8) - width / 2;
   }
+  const glm::dvec4 col = summed(v.color, v.sec, s);
+  for (int64_t yd = std::max<int64_t>(y0, 0); yd < std::min<int64_t>(y0 + width, fb.height); ++yd)
+    for (int64_t x = std::max<int64_t>(x0, 0); x < std::min<int64_t>(x0 + width, fb.width); ++x)
+      write_fragment(fb, int(x), fb.height - 1 - int(yd), v.pos.z, col, s);
+}
+
+void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s) {
+  // llvmpipe's lp_setup_line.c, non-rectangular (GL legacy) lines: a parallelogram `width` pixels
+  // across the major axis whose two ends are moved by half a pixel along it where the
+  // diamond-exit rule (GL 2.1 section 3.4.1) wants the end pixel and plain coverage would not
+  // give it (or the reverse), rasterized with four edge functions in 1/256 pixel and the
+  // triangles' ownership (left and bottom edges inclusive). Coordinates here are llvmpipe's: x,
+  // rows counted down (y_down), pixel centres at whole numbers once 0.5 is taken away.
+  const float ax = a.fx, ay = a.y_down, bx = b.fx, by = b.y_down;
+  const float dx = ax - bx, dy = ay - by;
+  const float area = dx * dx + dy * dy;
+  if (area == 0 || !std::isfinite(area)) return;
+  const float fwidth = std::max(1.0f, s.line_width);
+  const int64_t half = (fwidth >= 0 ? int64_t(fwidth + 0.5f) : 1) * 256 / 2;  // util_iround(width) * 256 / 2
+  const float x1diff = ax - std::floor(ax) - 0.5f, y1diff = ay - std::floor(ay) - 0.5f;
+  float x2diff = bx - std::floor(bx) - 0.5f, y2diff = by - std::floor(by) - 0.5f;
+  auto nonneg = [](float v) { return v >= 0; };
+  auto frac = [](float v) { return v - std::floor(v); };
+  float xo = 0, yo = 0, xoe = 0, yoe = 0;  // the moves of the first and the second end
+  float p1x = ax, p1y = ay, p2x = bx, p2y = by;  // after the swap: first end right (x-major) or up
+  int64_t x[4], y[4];
+  const bool x_major = std::fabs(dx) >= std::fabs(dy);
+  if (x_major) {
+    const float dydx = dy / dx;
+    if (y2diff == -0.5f && dy < 0) y2diff = 0.5f;
+    bool draw_start, draw_end;  // whether the diamond-exit rule wants the end pixels
+    if (std::fabs(x1diff) + std::fabs(y1diff) < 0.5f) draw_start = true;
+    else if (nonneg(x1diff) == nonneg(-dx)) draw_start = false;
+    else if (nonneg(-y1diff) != nonneg(dy)) draw_start = true;
+    else {
+      const float yi = frac(ay) + x1diff * dydx;
+      draw_start = yi < 1 && yi > 0;
+    }
+    if (std::fabs(x2diff) + std::fabs(y2diff) < 0.5f) draw_end = false;
+    else if (nonneg(x2diff) != nonneg(-dx)) draw_end = false;
+    else if (nonneg(-y2diff) == nonneg(dy)) draw_end = true;
+    else {
+      const float yi = frac(by) + x2diff * dydx;
+      draw_end = yi < 1 && yi > 0;
+    }
+    if (dx < 0) {  // the first end on the left: the ends exchanged, each end's move kept with it
+      std::swap(p1x, p2x), std::swap(p1y, p2y);
+      if ((x1diff <= 0) != draw_start) xoe = -x1diff - 0.5f, yoe = xoe * dydx;
+      if ((x2diff > 0) != draw_end) xo = -x2diff - 0.5f, yo = xo * dydx;
+    } else {
+      if ((x1diff > 0) != draw_start) xo = -x1diff + 0.5f, yo = xo * dydx;
+      if ((x2diff <= 0) != draw_end) xoe = -x2diff + 0.5f, yoe = xoe * dydx;
+    }
+    x[0] = x[3] = snap_away(p1x + xo - 0.5f), x[1] = x[2] = snap_away(p2x + xoe - 0.5f);
+    const int64_t y1 = snap_away(p1y + yo - 0.5f), y2 = snap_away(p2y + yoe - 0.5f);
+    y[0] = y1 - half, y[1] = y2 - half, y[2] = y2 + half, y[3] = y1 + half;
+  } else {
+    const float dxdy = dx / dy;
+    if (x2diff == -0.5f && dx < 0) x2diff = 0.5f;
+    bool draw_start, draw_end;
+    if (std::fabs(x1diff) + std::fabs(y1diff) < 0.5f) draw_start = true;
+    else if (nonneg(-y1diff) == nonneg(dy)) draw_start = false;
+    else if (nonneg(x1diff) != nonneg(-dx)) draw_start = true;
+    else {
+      const float xi = frac(ax) + y1diff * dxdy;
+      draw_start = xi < 1 && xi > 0;
+    }
+    if (std::fabs(x2diff) + std::fabs(y2diff) < 0.5f) draw_end = false;
+    else if (nonneg(-y2diff) != nonneg(dy)) draw_end = false;
+    else if (nonneg(x2diff) == nonneg(-dx)) draw_end = true;
+    else {
+      const float xi = frac(bx) + y2diff * dxdy;
+      draw_end = xi < 1 && xi >= 0;  // >= here, > above: as llvmpipe
+    }
+    // Bottom-edge rule (GL's bottom is llvmpipe's bottom too, rows counted down).
+    if (dy > 0) {
+      std::swap(p1x, p2x), std::swap(p1y, p2y);
+      if ((y1diff >= 0) != draw_start) yoe = -y1diff + 0.5f, xoe = yoe * dxdy;
+      if ((y2diff < 0) != draw_end) yo = -y2diff + 0.5f, xo = yo * dxdy;
+    } else {
+      if ((y1diff < 0) != draw_start) yo = -y1diff - 0.5f, xo = yo * dxdy;
+      if ((y2diff >= 0) != draw_end) yoe = -y2diff - 0.5f, xoe = yoe * dxdy;
+    }
+    y[0] = y[3] = snap_away(p1y + yo - 0.5f), y[1] = y[2] = snap_away(p2y + yoe - 0.5f);
+    const int64_t x1 = snap_away(p1x + xo - 0.5f), x2 = snap_away(p2x + xoe - 0.5f);
+    x[0] = x1 - half, x[1] = x2 - half, x[2] = x2 + half, x[3] = x1 + half;
+  }
+  // Edge i from corner i to i+1; a pixel centre P is inside when every edge function is positive,
+  // or zero on an edge that owns its pixels (left edges; bottom edges, llvmpipe's bottom_edge_rule).
+  int64_t dcdx[4], dcdy[4], own[4];
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) & 3;
+    dcdx[i] = y[i] - y[j], dcdy[i] = x[i] - x[j];
+    own[i] = dcdx[i] < 0 || (dcdx[i] == 0 && dcdy[i] < 0);
+  }
+  const int64_t xmin = std::max<int64_t>(0, (std::min({x[0], x[1], x[2], x[3]}) >> 8) - 1);
+  const int64_t xmax = std::min<int64_t>(fb.width - 1, (std::max({x[0], x[1], x[2], x[3]}) >> 8) + 1);
+  const int64_t ymin = std::max<int64_t>(0, (std::min({y[0], y[1], y[2], y[3]}) >> 8) - 1);
+  const int64_t ymax = std::min<int64_t>(fb.height - 1, (std::max({y[0], y[1], y[2], y[3]}) >> 8) + 1);
+  // Attributes as llvmpipe's line setup: along the major axis only (the "wide-lines formula"),
+  // from the ends in their given order, in float; colours perspective-correct through 1/w, depth
+  // linear.
+  const float inv_area = 1.0f / area;
+  const float idx = x_major ? dx * (1.0f + (dy / dx) * (dy / dx)) : 0.0f;
+  const float idy = x_major ? 0.0f : dy * (1.0f + (dx / dy) * (dx / dy));
+  struct Plane {
+    float a0, ax, ay;
+    float at(float X, float Y) const { return a0 + ax * X + ay * Y; }
+  };
+  auto plane = [&](float a1, float a2) {
+    const float d = a1 - a2;
+    Plane p;
+    p.ax = d * idx * inv_area, p.ay = d * idy * inv_area;
+    p.a0 = a1 - (p.ax * (ax - 0.5f) + p.ay * (ay - 0.5f));
+    return p;
+  };
+  const float w1 = float(a.inv_w), w2 = float(b.inv_w);
+  const Plane zp = plane(float(a.pos.z), float(b.pos.z)), wp = plane(w1, w2);
+  Plane cp[8];
+  for (int k = 0; k < 4; ++k) {
+    cp[k] = plane(float(a.color[k]) * w1, float(b.color[k]) * w2);
+    cp[4 + k] = plane(float(a.sec[k]) * w1, float(b.sec[k]) * w2);
+  }
+  for (int64_t yd = ymin; yd <= ymax; ++yd)
+    for (int64_t xp = xmin; xp <= xmax; ++xp) {
+      const int64_t px = xp * 256, py = yd * 256;
+      bool in = true;
+      for (int i = 0; i < 4 && in; ++i) in = dcdx[i] * (x[i] - px) - dcdy[i] * (y[i] - py) + own[i] > 0;
+      if (!in) continue;
+      const float X = float(xp), Y = float(yd);
+      glm::dvec4 col;
+      if (s.flat) {
+        col = summed(b.color, b.sec, s);  // clip_and_map gave both ends the provoking colours
+      } else {
+        const float w = 1.0f / wp.at(X, Y);
+        glm::dvec4 c, sc;
+        for (int k = 0; k < 4; ++k) c[k] = cp[k].at(X, Y) * w, sc[k] = cp[4 + k].at(X, Y) * w;
+        col = summed(c, sc, s);
+      }
+      write_fragment(fb, int(xp), fb.height - 1 - int(yd), zp.at(X, Y), col, s);
+    }
 }
 
 void clear_band(Framebuffer& fb, const ClearRequest& c, int b) {

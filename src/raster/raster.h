@@ -45,6 +45,7 @@ struct State {
   // (fb_height - y) with fused multiply-adds, then snapped there. Off: exact double maths.
   bool float_window = false;
   int fb_height = 0;
+  float line_width = 1, point_size = 1;  // glLineWidth, glPointSize
 };
 
 // A vector of at most N elements kept in place: clipping makes at most nine vertices of a
@@ -81,6 +82,9 @@ struct WindowVertex {
   glm::dvec4 sec;
   bool snapped = false;  // sx, sy hold the position in 1/256 pixel (pixel centres at +128)
   int64_t sx = 0, sy = 0;
+  // Window x in float, what llvmpipe's point and line setup reads with y_down (the float path's
+  // values; the double path's rounded).
+  float fx = 0;
 };
 
 // The float path of map_to_window: window x, y (GL rows, up), z, and the snapped position.
@@ -145,7 +149,10 @@ class Workers;
 void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
                     Workers& workers);  // the `count` lists one after the other
 
+// A line of width s.line_width and a point of size s.point_size as llvmpipe rasterizes them
+// (lp_setup_line.c, lp_setup_point.c). Colours: the line's interpolated, the point's its own.
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
+void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s);
 // glClear's request: which buffers, to what. A context keeps it until something reads or draws:
 // the triangle-list path has each thread clear the bands it is about to draw.
 struct ClearRequest {

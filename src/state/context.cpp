@@ -544,6 +544,10 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     case GL_COLOR_CLEAR_VALUE: vec4(glm::dvec4(clear_color_), true); break;
     case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_); normalized = kFromDouble; break;
     case GL_LINE_WIDTH: FFC_GET(double(line_width_)); break;
+    // llvmpipe's limits as Mesa 22.3 reports them: sizes 1 to 255 (LP_MAX_POINT_WIDTH), steps of 0.1.
+    case GL_POINT_SIZE: FFC_GET(double(point_size_)); break;
+    case GL_POINT_SIZE_RANGE: case GL_ALIASED_POINT_SIZE_RANGE: FFC_GET(1.0, 255.0); break;
+    case GL_POINT_SIZE_GRANULARITY: FFC_GET(double(0.1f)); break;
     case GL_RENDER_MODE: FFC_GET(double(render_mode_)); break;
     case GL_DEPTH_BITS: FFC_GET(24.0); break;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: FFC_GET(8.0); break;
@@ -739,6 +743,12 @@ void Context::LineWidth(float w) {
   if (!outside_begin_end()) return;
   if (w <= 0) return error(GL_INVALID_VALUE);  // Mesa's test: a NaN passes
   line_width_ = w;
+}
+
+void Context::PointSize(float size) {
+  if (!outside_begin_end()) return;
+  if (size <= 0) return error(GL_INVALID_VALUE);  // as Mesa's points.c: a NaN passes
+  point_size_ = size;
 }
 
 // ---------------------------------------------------------------- vertices
@@ -1251,10 +1261,8 @@ void Context::flush_primitive() {
     if (w.empty()) return;
     if (feedback) return emit_feedback(kind, w.begin(), w.size());
     if (is_point) {
-      raster::WindowVertex right = w[0];
-      right.pos.x += 1;
       flush_clear();
-      raster::draw_line(fb_, w[0], right, rs);
+      raster::draw_point(fb_, w[0], rs);
     } else {
       flush_clear();
       raster::draw_line(fb_, w[0], w[1], rs);
@@ -1306,20 +1314,37 @@ void Context::flush_primitive() {
     case GL_TRIANGLE_FAN:
       for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, i + 1, GL_POLYGON_TOKEN);
       break;
-    case GL_QUADS:  // split as llvmpipe does: (0,1,3), (1,2,3); the 4th vertex provokes
+    // Mesa splits quads and polygons one way when drawing and another in feedback (measured with
+    // Mesa 22.3 in tests/raster/prims_test.cpp). Drawing smooth, the quad (q0, q1, q2, q3) is the
+    // fan (q0, q1, q2), (q0, q2, q3); feedback, and drawing flat quads, take the draw module's
+    // decomposition for the last vertex provoking: (q0, q1, q3), (q1, q2, q3); feedback gives a
+    // polygon's fan with its first vertex last. GL 2.1 leaves the split open (section 2.6.1).
+    case GL_QUADS:  // the 4th vertex provokes
       for (size_t i = 0; i + 3 < n; i += 4) {
-        emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
-        emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        if (feedback || rs.flat) {
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+          emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        } else {
+          emit({i, i + 1, i + 2}, i + 3, GL_POLYGON_TOKEN);
+          emit({i, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        }
       }
       break;
-    case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2); vertex 2i+3 provokes
+    case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2), as Mesa's feedback (2i+2, 2i, 2i+1, 2i+3); 2i+3 provokes
       for (size_t i = 0; i + 3 < n; i += 2) {
-        emit({i, i + 1, i + 2}, i + 3, GL_POLYGON_TOKEN);
-        emit({i + 1, i + 3, i + 2}, i + 3, GL_POLYGON_TOKEN);
+        if (feedback) {
+          emit({i + 2, i, i + 3}, i + 3, GL_POLYGON_TOKEN);
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        } else {
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+          emit({i, i + 3, i + 2}, i + 3, GL_POLYGON_TOKEN);
+        }
       }
       break;
     case GL_POLYGON:  // a fan from the first vertex, which provokes
-      for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
+      for (size_t i = 1; i + 1 < n; ++i)
+        if (feedback) emit({i, i + 1, 0}, 0, GL_POLYGON_TOKEN);
+        else emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
       break;
   }
   const std::vector<raster::Triangle>* list = &tris;

@@ -107,6 +107,7 @@ class Context {
   void LineWidth(float w);
   void Finish();
   void Flush();
+  void PointSize(float size);
 
   void Begin(GLenum mode);
   void End();
@@ -203,6 +204,7 @@ class Context {
   glm::dvec3 color_indexes_[2] = {{0, 1, 1}, {0, 1, 1}};  // GL_COLOR_INDEXES: stored and reported only
   lighting::ModelParams model_;
   float line_width_ = 1;
+  float point_size_ = 1;
 
   // Transform
   GLenum matrix_mode_ = GL_MODELVIEW;

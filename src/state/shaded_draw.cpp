@@ -130,6 +130,8 @@ raster::State Context::raster_state() const {
   rs.add_secondary = lighting_ && model_.separate_specular;
   rs.float_window = precision_ == Precision::Float;
   rs.fb_height = fb_.height;
+  rs.line_width = line_width_;
+  rs.point_size = point_size_;
   return rs;
 }
 

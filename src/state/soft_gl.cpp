@@ -97,6 +97,7 @@ void APIENTRY Normal3fv(const GLfloat* v) { FWD(Normal(v[0], v[1], v[2])); }
 void APIENTRY NormalPointer(GLenum t, GLsizei s, const GLvoid* p) { FWD(NormalPointer(t, s, p)); }
 void APIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Ortho(l, r, b, t, n, f)); }
 void APIENTRY PixelStorei(GLenum p, GLint v) { FWD(PixelStorei(p, v)); }
+void APIENTRY PointSize(GLfloat s) { FWD(PointSize(s)); }
 void APIENTRY PopMatrix() { FWD(PopMatrix()); }
 void APIENTRY PushMatrix() { FWD(PushMatrix()); }
 void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }

@@ -560,6 +560,13 @@ INSTANTIATE_TEST_SUITE_P(Misc, Errors, ::testing::ValuesIn(std::vector<Case>{
   {"LineWidth_InsideBeginEnd", nullptr, inside([] { glLineWidth(2); }), IO},
   {"LineWidth_SmallIsValid", nullptr, [] { glLineWidth(0.001f); }, OK},
   {"LineWidth_LargeIsValid", nullptr, [] { glLineWidth(100); }, OK},
+  {"PointSize_Zero", [] { glPointSize(3); }, [] { glPointSize(0); }, IV},
+  {"PointSize_Negative", [] { glPointSize(3); }, [] { glPointSize(-2); }, IV},
+  {"PointSize_MinusInfinity", [] { glPointSize(3); }, [] { glPointSize(-kInf); }, IV},
+  {"PointSize_NaN", [] { glPointSize(3); }, [] { glPointSize(kNaN); }, OK},
+  {"PointSize_InsideBeginEnd", nullptr, inside([] { glPointSize(2); }), IO},
+  {"PointSize_SmallIsValid", nullptr, [] { glPointSize(0.001f); }, OK},
+  {"PointSize_LargeIsValid", nullptr, [] { glPointSize(1000); }, OK},
 
   {"PixelStorei_PnameLighting", nullptr, [] { glPixelStorei(GL_LIGHTING, 4); }, IE},
   {"PixelStorei_PackAlignment3", nullptr, [] { glPixelStorei(GL_PACK_ALIGNMENT, 3); }, IV},

@@ -152,6 +152,7 @@ INSTANTIATE_TEST_SUITE_P(IntegerColour, RoundTrip, ::testing::ValuesIn(std::vect
   {"ClearDepth", nullptr, [] { glClearDepth(0.3); }, OK},
   {"ClearDepthOutOfRange", nullptr, [] { glClearDepth(-2); }, OK},
   {"LineWidth", nullptr, [] { glLineWidth(2.5f); }, OK},
+  {"PointSize", nullptr, [] { glPointSize(2.5f); }, OK},
   {"LineWidthBelowHalf", nullptr, [] { glLineWidth(0.4f); }, OK},
   // glArrayElement outside glBegin/glEnd sets the current normal and colour from integer arrays:
   // the conversion of signed and unsigned integers to [-1, 1] / [0, 1].

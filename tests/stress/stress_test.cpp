@@ -254,6 +254,7 @@ TEST(Harness, TheRasterCountsFragmentsFromNonFiniteColours) {
 
   raster::reset_nonfinite_fragments();
   a.color.g = std::numeric_limits<double>::infinity();
+  a.fx = 1, a.y_down = 15, b.fx = 15, b.y_down = 14;  // the position line setup reads (rows counted down)
   raster::draw_line(fb, a, b, s);
   EXPECT_GT(raster::nonfinite_fragments(), 5u);
 
