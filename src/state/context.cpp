@@ -483,8 +483,12 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     case GL_FEEDBACK_BUFFER_TYPE: FFC_GET(double(feedback_type_)); break;
     default: {
       const int on = enabled_state(pname);  // every capability glIsEnabled knows is also a glGet value
-      if (on < 0) return error(GL_INVALID_ENUM), 0;
-      FFC_GET(double(on));
+      if (on >= 0) {
+        FFC_GET(double(on));
+        break;
+      }
+      n = get_table_values(pname, out, normalized);
+      if (n == 0) return error(GL_INVALID_ENUM), 0;
     }
   }
   return n;
