@@ -3,6 +3,7 @@
 // (GL 2.1's, the errors around them included) over random rectangles, partly outside the
 // framebuffer, with random GL_PACK_* settings; the whole output buffer, pre-filled with a
 // sentinel, compared byte for byte, and the error codes.
+#include <cstdint>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -207,6 +208,41 @@ TEST(ReadPixels, DepthConversions) {
       ADD_FAILURE() << "depth " << num(depths[i / std::size(types) / 2]) << " as " << enum_name(types[i % std::size(types)])
                     << (i / std::size(types) % 2 ? " swapped" : "")
                     << ": mesa 0x" << std::hex << got[kMesa][i] << ", soft 0x" << got[kSoft][i];
+}
+
+// Two places where Mesa 22.3 departs from GL 2.1 and soft follows it, pinned on both sides so
+// that a fixed Mesa shows here:
+// - GL_LUMINANCE(_ALPHA) as GL_UNSIGNED_INT / GL_INT: Mesa converts its float 1.0 with a float
+//   product, 1.0f * 4294967295 = 2^32 (or 2^31), which wraps: white reads back as 0 and
+//   -2^31 (GL 2.1 section 4.3.2 and table 2.9: 2^32 - 1 and 2^31 - 1). GL_RGBA is not affected.
+// - GL_DEPTH_COMPONENT as GL_UNSIGNED_INT: without byte swapping Mesa replicates the 24 bits
+//   into 32 (0x400000 -> 0x40000040); with GL_PACK_SWAP_BYTES it goes through float and a
+//   truncated double product (0x4000007F, swapped), so the setting changes the value and not
+//   only the byte order (GL 2.1 section 4.3.2: swapping reorders the bytes only).
+TEST(ReadPixels, MesaDeviationsFollowed) {
+  for (Side s : {kMesa, kSoft}) {
+    backend(s).begin(4, 4);
+    glClearColor(1, 1, 1, 1);
+    glClearDepth(0.25);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    GLuint u[2] = {7, 7};
+    GLint i[2] = {7, 7};
+    glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_UNSIGNED_INT, u);
+    glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_INT, i);
+    EXPECT_EQ(u[0], 0u) << side_name(s);
+    EXPECT_EQ(u[1], 0u) << side_name(s);
+    EXPECT_EQ(i[0], INT32_MIN) << side_name(s);
+    EXPECT_EQ(i[1], INT32_MIN) << side_name(s);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT, u);  // the same white, as RGBA: no wrap
+    EXPECT_EQ(u[0], 0xFFFFFFFFu) << side_name(s);
+    GLuint z = 0, z_swapped = 0;
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
+    glPixelStorei(GL_PACK_SWAP_BYTES, 1);
+    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z_swapped);
+    EXPECT_EQ(z, 0x40000040u) << side_name(s);
+    EXPECT_EQ(__builtin_bswap32(z_swapped), 0x4000007Fu) << side_name(s);
+    EXPECT_EQ(enum_name(glGetError()), "GL_NO_ERROR") << side_name(s);
+  }
 }
 
 // The size check comes before the format check (Mesa: GL_INVALID_VALUE for a negative size even
