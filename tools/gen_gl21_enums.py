@@ -15,12 +15,12 @@ glext = pathlib.Path("/usr/include/GL/glext.h").read_text()
 glext = glext[glext.index("#ifndef GL_VERSION_1_2") : glext.index("#endif /* GL_VERSION_2_1 */")]
 seen, rows = set(), []
 for name, value in list(defines(gl_h)) + list(defines(glext)):
-    # Not enums: version macros, bit masks (GL_*_BIT, GL_ALL_ATTRIB_BITS), the boolean and zero
-    # values (GL_FALSE, GL_NONE, GL_POINTS ...: small numbers that would stand for the first
-    # name with that value), and the GL_*_BIT masks that share values with real enums.
-    if name.startswith("GL_VERSION_") or value < 0x100 or name.endswith("_BIT") or name.endswith("_BITS") and value > 0xFFFF:
+    # Left out: the version macros; the bit masks (GL_*_BIT, GL_ALL_ATTRIB_BITS,
+    # GL_CLIENT_ALL_ATTRIB_BITS), some of which share values with real enums; and the values
+    # below 0x100 (GL_FALSE, GL_NONE, GL_POINTS ...), which name no state; then one name per value.
+    if name.startswith("GL_VERSION_") or name.endswith("_BIT") or name.endswith("ATTRIB_BITS"):
         continue
-    if "ATTRIB_BITS" in name or value in seen:
+    if value < 0x100 or value in seen:
         continue
     seen.add(value)
     rows.append(name)

@@ -204,6 +204,15 @@ void pack_pixels(const raster::Framebuffer& fb, int x, int y, int w, int h, GLen
   const size_t a = size_t(pack.alignment);
   const size_t stride = (row_pixels * pixel + a - 1) / a * a;
   auto* base = static_cast<uint8_t*>(out) + size_t(pack.skip_rows) * stride + size_t(pack.skip_pixels) * pixel;
+  // GL_PACK_SWAP_BYTES. Mesa swaps a colour read's bytes once the whole rectangle is packed
+  // (readpix.c, then _mesa_swap_bytes_2d_image), row after row over the part inside the
+  // framebuffer: where GL_PACK_ROW_LENGTH below the width makes rows overlap, the shared bytes
+  // are swapped twice. Two cases swap as they go, pixel by pixel in effect: depth, span by span
+  // (_mesa_pack_depth_span), and GL_RGBA / GL_UNSIGNED_INT_8_8_8_8, whose swapped layout is the
+  // colour buffer's own, so that Mesa copies the rows (readpixels_memcpy).
+  const bool swap = pack.swap_bytes && elem > 1;
+  const bool swap_each = swap && (depth || (format == GL_RGBA && type == GL_UNSIGNED_INT_8_8_8_8));
+  const bool swap_at_end = swap && !swap_each;
   for (int j = 0; j < h; ++j) {
     const int fy = y + j;
     if (fy < 0 || fy >= fb.height) continue;
@@ -240,10 +249,17 @@ void pack_pixels(const raster::Framebuffer& fb, int x, int y, int w, int h, GLen
       } else {
         for (int k = 0; k < n; ++k) put_from_byte(p + size_t(k) * elem, type, c[ch[k]]);
       }
-      if (pack.swap_bytes && elem > 1)
-        for (int k = 0; k < (packed ? 1 : n); ++k) swap_bytes(p + size_t(k) * elem, elem);
+      if (swap_each) swap_bytes(p, elem);
     }
   }
+  if (!swap_at_end) return;
+  const int i0 = std::max(0, -x), i1 = std::min(w, fb.width - x);
+  const int j0 = std::max(0, -y), j1 = std::min(h, fb.height - y);
+  const size_t per_pixel = pixel / elem;
+  for (int j = j0; j < j1; ++j)
+    for (int i = i0; i < i1; ++i)
+      for (size_t k = 0; k < per_pixel; ++k)
+        swap_bytes(base + size_t(j) * stride + size_t(i) * pixel + k * elem, elem);
 }
 
 }  // namespace ffc::state

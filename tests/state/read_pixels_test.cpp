@@ -127,7 +127,9 @@ TEST(ReadPixels, EveryFormatAndTypeAgainstMesa) {
           r.h = std::uniform_int_distribution<int>(0, kH + 4 - std::max(r.y, 0))(rng);
           if (k == 0) r.x = 0, r.y = 0, r.w = kW, r.h = kH;  // the whole picture, defaults
           r.align = k == 0 ? 4 : 1 << align_i(rng);
-          r.row_length = k == 0 || coin(rng) ? 0 : r.w + small(rng);
+          // GL_PACK_ROW_LENGTH 0 (the width), or a length from below the width (rows that
+          // overlap, the later row winning) to beyond it.
+          r.row_length = k == 0 || coin(rng) ? 0 : std::max(1, r.w - 2 + small(rng) * 2);
           r.skip_rows = k == 0 ? 0 : small(rng);
           r.skip_pixels = k == 0 ? 0 : small(rng);
           r.swap = k == 0 ? 0 : coin(rng);
@@ -174,6 +176,61 @@ TEST(ReadPixels, EveryFormatAndTypeAgainstMesa) {
   // 0x1234 with every type, GL_BITMAP / GL_DOUBLE / 0x1234 / 24_8 with every format, and the
   // packed types with the wrong formats.
   EXPECT_EQ(with_error, kPictures * kTrials * 225);
+}
+
+// Every byte value through every readable format and type: the colour buffer cleared to 256
+// colours that give each channel every value (R v, G 255 - v, B 7v, A 13v, modulo 256), one
+// pixel read each time, compared with Mesa byte for byte (with and without byte swapping).
+TEST(ReadPixels, EveryByteValue) {
+  std::vector<uint8_t> got[2];
+  std::vector<std::string> what;
+  for (Side s : {kMesa, kSoft}) {
+    backend(s).begin(3, 2);
+    for (int v = 0; v < 256; ++v) {
+      const int c[4] = {v, 255 - v, v * 7 % 256, v * 13 % 256};
+      glClearColor(c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, c[3] / 255.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      uint8_t rgba[4] = {};
+      glReadPixels(2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+      for (int k = 0; k < 4; ++k) ASSERT_EQ(rgba[k], c[k]) << side_name(s) << ": the clear colour's bytes";
+      for (const Named& f : kFormats) {
+        if (f.e == GL_DEPTH_COMPONENT) break;  // the colour formats come first
+        for (const Named& t : kTypes) {
+          if (t.e == GL_BITMAP) break;  // the readable types come first
+          for (int swap : {0, 1}) {
+            glPixelStorei(GL_PACK_SWAP_BYTES, swap);
+            uint8_t out[16];
+            std::fill(out, out + 16, kFill);
+            glReadPixels(2, 1, 1, 1, f.e, t.e, out);
+            const GLenum e = glGetError();
+            got[s].insert(got[s].end(), out, out + 16);
+            got[s].push_back(uint8_t(e != GL_NO_ERROR));
+            if (s == kMesa)
+              what.push_back(std::string(f.name) + " / " + t.name + (swap ? " swapped" : "") + ", colour " +
+                             std::to_string(v));
+          }
+        }
+      }
+    }
+  }
+  ASSERT_EQ(got[kSoft].size(), got[kMesa].size());
+  int bad = 0, reads = int(what.size()), errors = 0;
+  for (int r = 0; r < reads; ++r) {
+    const auto m = got[kMesa].begin() + r * 17, s = got[kSoft].begin() + r * 17;
+    errors += m[16];
+    if (!std::equal(m, m + 17, s) && ++bad <= 10) {
+      int k = 0;
+      while (m[k] == s[k]) ++k;
+      ADD_FAILURE() << what[r] << (k == 16 ? ": the error differs" : ": byte " + std::to_string(k) + ": mesa " +
+                                                                        std::to_string(m[k]) + ", soft " +
+                                                                        std::to_string(s[k]));
+    }
+  }
+  std::printf("[ ReadPix  ] every byte value: %d of %d one-pixel reads agree\n", reads - bad, reads);
+  // The packed types with the wrong format: the 4 RGB ones with the 9 colour formats other than
+  // GL_RGB, the 8 RGBA ones with the 8 other than GL_RGBA and GL_BGRA; both swap settings, every
+  // colour.
+  EXPECT_EQ(errors, (9 * 4 + 8 * 8) * 2 * 256);
 }
 
 // The depth conversions over many depth values (one clear each), every type, bytes swapped or
