@@ -64,6 +64,8 @@ constexpr Constant kConstants[] = {
     {GL_STENCIL_BITS, Rounded, 1, {0}},
     {GL_STENCIL_CLEAR_VALUE, Rounded, 1, {0}},
     {GL_STENCIL_FUNC, Rounded, 1, {GL_ALWAYS}},
+    // Mesa keeps the stencil masks in 8 bits, with no stencil buffer at all (GL 2.1's state tables
+    // give all 1's, which a GLint reads as -1).
     {GL_STENCIL_VALUE_MASK, Rounded, 1, {255}},
     {GL_STENCIL_FAIL, Rounded, 1, {GL_KEEP}},
     {GL_STENCIL_PASS_DEPTH_FAIL, Rounded, 1, {GL_KEEP}},
@@ -84,7 +86,7 @@ constexpr Constant kConstants[] = {
     {GL_MAX_PIXEL_MAP_TABLE, Rounded, 1, {256}},
     {GL_MAX_ATTRIB_STACK_DEPTH, Rounded, 1, {16}},
     {GL_MAX_NAME_STACK_DEPTH, Rounded, 1, {64}},
-    {GL_MAX_VIEWPORT_DIMS, Rounded, 2, {16384, 16384}},
+    {GL_MAX_VIEWPORT_DIMS, Rounded, 2, {16384, 16384}},  // as Context::Viewport clamps
     {GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, Rounded, 1, {16}},
     {GL_ATTRIB_STACK_DEPTH, Rounded, 1, {0}},
     {GL_CLIENT_ATTRIB_STACK_DEPTH, Rounded, 1, {0}},
@@ -152,6 +154,7 @@ constexpr Constant kConstants[] = {
     {GL_MAX_CUBE_MAP_TEXTURE_SIZE, Rounded, 1, {16384}},
     {GL_TEXTURE_COMPRESSION_HINT, Rounded, 1, {GL_DONT_CARE}},
     {GL_NUM_COMPRESSED_TEXTURE_FORMATS, Rounded, 1, {12}},
+    // llvmpipe's compressed texture formats: this pipeline has no textures, but Mesa lists them.
     {GL_COMPRESSED_TEXTURE_FORMATS, Rounded, 12, {0x86B0, 0x86B1, 0x83F0, 0x83F2, 0x83F3, 0x9274, 0x9278, 0x9270, 0x9272, 0x9271, 0x9273, 0x9276}},
     {GL_SAMPLE_BUFFERS, Rounded, 1, {0}},
     {GL_SAMPLES, Rounded, 1, {0}},
