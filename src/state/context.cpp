@@ -2,6 +2,7 @@
 
 #include "state/float_matrix.h"
 #include "state/client_arrays.h"
+#include "state/read_pixels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -576,8 +577,12 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     case GL_FEEDBACK_BUFFER_TYPE: FFC_GET(double(feedback_type_)); break;
     default: {
       const int on = enabled_state(pname);  // every capability glIsEnabled knows is also a glGet value
-      if (on < 0) return error(GL_INVALID_ENUM), 0;
-      FFC_GET(double(on));
+      if (on >= 0) {
+        FFC_GET(double(on));
+        break;
+      }
+      n = get_table_values(pname, out, normalized);
+      if (n == 0) return error(GL_INVALID_ENUM), 0;
     }
   }
   return n;
@@ -1398,7 +1403,7 @@ void Context::PixelStorei(GLenum pname, GLint param) {
     case GL_PACK_ROW_LENGTH: case GL_PACK_IMAGE_HEIGHT: case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS:
     case GL_PACK_SKIP_IMAGES: case GL_UNPACK_ROW_LENGTH: case GL_UNPACK_IMAGE_HEIGHT: case GL_UNPACK_SKIP_ROWS:
     case GL_UNPACK_SKIP_PIXELS: case GL_UNPACK_SKIP_IMAGES:
-      // Recorded and reported; glReadPixels honours only GL_PACK_ALIGNMENT.
+      // Recorded and reported; glReadPixels honours the GL_PACK_* ones (read_pixels.cpp).
       if (param < 0) return error(GL_INVALID_VALUE);
       pixel_store_[pname] = param;
       return;
@@ -1408,17 +1413,18 @@ void Context::PixelStorei(GLenum pname, GLint param) {
 
 void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
   if (!outside_begin_end()) return;
-  if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  if (format != GL_RGBA || type != GL_UNSIGNED_BYTE) return error(GL_INVALID_ENUM);
+  if (w < 0 || h < 0) return error(GL_INVALID_VALUE);  // Mesa checks the size before the format
+  if (const GLenum e = read_pixels_error(format, type)) return error(e);
   flush_clear();
-  auto* out = static_cast<uint8_t*>(pixels);
-  const size_t row = (size_t(w) * 4 + pack_alignment_ - 1) / pack_alignment_ * pack_alignment_;
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      const int fx = x + i, fy = y + j;
-      if (fx < 0 || fy < 0 || fx >= fb_.width || fy >= fb_.height) continue;
-      std::memcpy(out + row * j + size_t(i) * 4, &fb_.color[(size_t(fy) * fb_.width + fx) * 4], 4);
-    }
+  auto store = [this](GLenum p) {
+    const auto it = pixel_store_.find(p);
+    return it == pixel_store_.end() ? 0 : it->second;
+  };
+  PackState pack;
+  pack.alignment = pack_alignment_;
+  pack.row_length = store(GL_PACK_ROW_LENGTH), pack.skip_rows = store(GL_PACK_SKIP_ROWS);
+  pack.skip_pixels = store(GL_PACK_SKIP_PIXELS), pack.swap_bytes = store(GL_PACK_SWAP_BYTES) != 0;
+  pack_pixels(fb_, x, y, w, h, format, type, pack, pixels);
 }
 
 const GLubyte* Context::GetString(GLenum name) {

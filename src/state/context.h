@@ -87,6 +87,8 @@ class Context {
   void GetDoublev(GLenum pname, GLdouble* params);
   void GetFloatv(GLenum pname, GLfloat* params);
   void GetIntegerv(GLenum pname, GLint* params);
+  void GetBooleanv(GLenum pname, GLboolean* params);  // get_table.cpp, as GetPointerv
+  void GetPointerv(GLenum pname, void** params);
 
   void MatrixMode(GLenum mode);
   void LoadIdentity();
@@ -149,6 +151,9 @@ class Context {
   // glGet's list: the values and their count (0 after an error), and how glGetIntegerv converts them.
   enum { kRound, kFromFloat, kFromDouble };
   int get_values(GLenum pname, GLdouble* out, int& normalized);
+  // The rest of the list (get_table.cpp): state not modelled, at Mesa's defaults; 0 for a name
+  // it does not know (no error recorded).
+  int get_table_values(GLenum pname, GLdouble* out, int& normalized);
   std::vector<glm::dmat4>& stack();
   // The modelview as this context's precision keeps it: lights, normals and glGet read this one.
   glm::dmat4 modelview() const;

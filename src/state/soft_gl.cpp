@@ -43,10 +43,12 @@ void APIENTRY Finish() { FWD(Finish()); }
 void APIENTRY Flush() { FWD(Flush()); }
 void APIENTRY FrontFace(GLenum m) { FWD(FrontFace(m)); }
 void APIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Frustum(l, r, b, t, n, f)); }
+void APIENTRY GetBooleanv(GLenum p, GLboolean* v) { FWD(GetBooleanv(p, v)); }
 void APIENTRY GetDoublev(GLenum p, GLdouble* v) { FWD(GetDoublev(p, v)); }
 GLenum APIENTRY GetError() { return C() ? C()->GetError() : GL_NO_ERROR; }
 void APIENTRY GetFloatv(GLenum p, GLfloat* v) { FWD(GetFloatv(p, v)); }
 void APIENTRY GetIntegerv(GLenum p, GLint* v) { FWD(GetIntegerv(p, v)); }
+void APIENTRY GetPointerv(GLenum p, GLvoid** v) { FWD(GetPointerv(p, v)); }
 void APIENTRY GetLightfv(GLenum l, GLenum p, GLfloat* v) { FWD(GetLightfv(l, p, v)); }
 void APIENTRY GetMaterialfv(GLenum f, GLenum p, GLfloat* v) { FWD(GetMaterialfv(f, p, v)); }
 const GLubyte* APIENTRY GetString(GLenum n) { return C() ? C()->GetString(n) : nullptr; }
