@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "backends/soft/soft_backend.h"
 
@@ -21,14 +22,36 @@ void require_same_shape(const std::vector<FeedbackPrimitive>& a, const std::vect
                                " differs in kind or size between Mesa and " + what);
 }
 
-const FeedbackVertex& nearest(const FeedbackPrimitive& p, const FeedbackVertex& to) {
+// For each of Mesa's vertices in a primitive, the index of its partner among ours. A clipped
+// polygon may start its fan at another vertex than Mesa's clipper does, so ours may be Mesa's
+// list rotated (or, walked the other way, reversed): the arrangement that puts every vertex
+// closest to its partner's window position wins. Pairing each vertex with its nearest one instead goes wrong where two vertices share a
+// window position with different colours (a cone's apex, a quad with an edge collapsed to a
+// point): both would take the same partner. Ties (equal positions) go to the arrangement whose
+// colours are closest; among equals, feedback order (no rotation) comes first. For a triangle the
+// rotations and reversals are every pairing there is.
+std::vector<size_t> partners(const FeedbackPrimitive& mesa, const FeedbackPrimitive& ours) {
+  const size_t n = mesa.vertices.size();
+  std::vector<size_t> out(n);
+  auto index = [n](size_t i, size_t r, bool reversed) { return reversed ? (r + n - i) % n : (i + r) % n; };
   size_t best = 0;
-  double best_d = INFINITY;
-  for (size_t i = 0; i < p.vertices.size(); ++i) {
-    const double d = glm::length(p.vertices[i].position - to.position);
-    if (d < best_d) best = i, best_d = d;
-  }
-  return p.vertices[best];
+  bool best_reversed = false;
+  double best_pos = INFINITY, best_col = INFINITY;
+  for (int rev = 0; rev < 2; ++rev)
+    for (size_t r = 0; r < n; ++r) {
+      double pos = 0, col = 0;
+      for (size_t i = 0; i < n; ++i) {
+        const FeedbackVertex &m = mesa.vertices[i], &o = ours.vertices[index(i, r, rev)];
+        pos = std::max(pos, glm::length(o.position - m.position));
+        col += glm::length(o.color - m.color);
+      }
+      // Positions decide (both agree far below a pixel); colours only break ties.
+      const double tie = 1e-6;
+      if (pos < best_pos - tie || (pos <= best_pos + tie && col < best_col))
+        best = r, best_reversed = rev, best_pos = pos, best_col = col;
+    }
+  for (size_t i = 0; i < n; ++i) out[i] = index(i, best, best_reversed);
+  return out;
 }
 
 }  // namespace
@@ -46,12 +69,11 @@ VertexReport compare_vertices(int width, int height, const std::function<void()>
   VertexReport r;
   r.known_mesa_deviations.assign(deviations.begin(), deviations.end());
   double sum_sq = 0, sum_sq_d = 0, ch_sq[4] = {0, 0, 0, 0};
-  for (size_t p = 0; p < ref.size(); ++p)
+  for (size_t p = 0; p < ref.size(); ++p) {
+    const std::vector<size_t> pf = partners(ref[p], ours_f[p]), pd = partners(ref[p], ours_d[p]);
     for (size_t v = 0; v < ref[p].vertices.size(); ++v) {
-      // Within a primitive, pair by window position: a clipped polygon may start its fan at
-      // another vertex than Mesa's clipper does, and that is not a lighting difference.
       const FeedbackVertex& m = ref[p].vertices[v];
-      const FeedbackVertex &f = nearest(ours_f[p], m), &d = nearest(ours_d[p], m);
+      const FeedbackVertex &f = ours_f[p].vertices[pf[v]], &d = ours_d[p].vertices[pd[v]];
       ++r.vertices;
       r.max_position = std::max(r.max_position, glm::length(glm::dvec2(m.position - f.position)));
       for (int c = 0; c < 4; ++c) {
@@ -65,6 +87,7 @@ VertexReport compare_vertices(int width, int height, const std::function<void()>
         r.max_abs_float_vs_double = std::max(r.max_abs_float_vs_double, std::abs(f.color[c] - d.color[c]));
       }
     }
+  }
   if (r.vertices) {
     r.rms = std::sqrt(sum_sq / (4.0 * r.vertices));
     r.rms_double = std::sqrt(sum_sq_d / (4.0 * r.vertices));

@@ -24,7 +24,8 @@ void add_bench(CLI::App& app) {
   auto block = std::make_shared<int>(5);
   auto json = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
-  opts->add_to(cmd);
+  opts->add_to(cmd, true, false);
+  refuse_option(cmd, "--backend", "bench takes --backends, a comma-separated list of mesa, soft and soft-double");
   cmd->add_option("--backends", *backends_list, "Comma-separated: mesa, soft, soft-double")->capture_default_str();
   cmd->add_option("--frames", *frames, "Timed frames per backend (after one warm-up frame)")
       ->check(CLI::Range(1, 100000))
@@ -41,7 +42,12 @@ void add_bench(CLI::App& app) {
     const std::function<void()> issue = scene::frame(d);  // meshes built once, outside the timing
     std::vector<std::string> names;
     std::stringstream list(*backends_list);
-    for (std::string n; std::getline(list, n, ',');) names.push_back(n);
+    for (std::string n; std::getline(list, n, ',');) {
+      if (std::find(kBackendNames.begin(), kBackendNames.end(), n) == kBackendNames.end())
+        throw std::invalid_argument("--backends: unknown backend '" + n + "' (mesa, soft, soft-double)");
+      names.push_back(n);
+    }
+    if (names.empty()) throw std::invalid_argument("--backends: no backend named (mesa, soft, soft-double)");
     nlohmann::json medians = nlohmann::json::object(), all = nlohmann::json::object(), alloc_json = nlohmann::json::object();
     std::vector<std::unique_ptr<backends::Backend>> backends;
     for (const std::string& name : names) {

@@ -17,13 +17,24 @@ void add_check(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   auto max_steps = std::make_shared<int>(1);
   auto out = std::make_shared<std::string>("check-failures");
-  opts->add_to(cmd);
+  opts->add_to(cmd, true, false);
+  refuse_option(cmd, "--backend",
+                "check always draws on mesa (Mesa's pipeline, the reference) and on ours, soft and soft-double; "
+                "there is no backend to choose");
   cmd->add_option("--level", *level, "vertex or pixel")->check(CLI::IsMember({"vertex", "pixel"}))->capture_default_str();
-  cmd->add_option("--tolerance", *tolerance, "vertex: largest colour difference that passes")->capture_default_str();
-  cmd->add_option("--max-diff", *max_steps, "pixel: largest difference in 8-bit steps that passes")->capture_default_str();
-  cmd->add_option("--out", *out, "pixel: where a failure writes mesa.png, soft.png and diff.png")->capture_default_str();
+  const CLI::Option* tolerance_opt =
+      cmd->add_option("--tolerance", *tolerance, "vertex: largest colour difference that passes")->capture_default_str();
+  const CLI::Option* max_diff_opt =
+      cmd->add_option("--max-diff", *max_steps, "pixel: largest difference in 8-bit steps that passes")->capture_default_str();
+  const CLI::Option* out_opt =
+      cmd->add_option("--out", *out, "pixel: where a failure writes mesa.png, soft.png and diff.png")->capture_default_str();
   cmd->add_flag("--json", *json, "Print the report as JSON");
   cmd->callback([=] {
+    // Each level has its own options: one given to the other level would be silently ignored.
+    if (*level == "vertex" && (max_diff_opt->count() || out_opt->count()))
+      throw std::invalid_argument("--max-diff and --out apply to --level pixel; --level vertex takes --tolerance");
+    if (*level == "pixel" && tolerance_opt->count())
+      throw std::invalid_argument("--tolerance applies to --level vertex; --level pixel takes --max-diff");
     const scene::Description desc = opts->description();
     if (*level == "pixel") {
       auto mesa = backends::make("mesa"), soft = backends::make("soft");

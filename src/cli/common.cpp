@@ -2,11 +2,39 @@
 
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
+
+#include "mesh/icosphere.h"
 
 namespace ffc::cli {
 
-void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals) {
+const std::vector<std::string> kBackendNames = {"mesa", "soft", "soft-double"};
+
+void add_depth_option(CLI::App* app, int& depth, const std::string& help) {
+  app->add_option("--depth", depth, help)->check(CLI::Validator(
+      [](std::string& v) {
+        int d = 0;
+        try {
+          size_t used = 0;
+          d = std::stoi(v, &used);
+          if (used != v.size()) return "'" + v + "' is not a whole number";
+        } catch (const std::exception&) {
+          return "'" + v + "' is not a whole number";
+        }
+        return mesh::icosphere_depth_error(d);
+      },
+      "0.." + std::to_string(mesh::kMaxIcosphereDepth)));
+}
+
+void refuse_option(CLI::App* app, const std::string& name, const std::string& why) {
+  auto never_read = std::make_shared<std::string>();  // the check below refuses every value
+  app->add_option(name, *never_read)
+      ->check(CLI::Validator([why, never_read](std::string&) { return why; }, ""))
+      ->group("");
+}
+
+void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals, bool with_backend) {
   app->add_option("--scene", scene, "Scene: cube, icosphere, or a TOML scene file (*.toml)")->capture_default_str();
   if (with_shade_and_normals) {
     app->add_option("--shade", shade, "glShadeModel: flat or smooth (default: smooth, or the file's)");
@@ -15,14 +43,19 @@ void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals) {
                     "mesh file's own "
                     "(default: cube face, icosphere sphere, or the file's)");
   }
-  app->add_option("--depth", depth, "Icosphere subdivision depth, 0..12 (default 3, or the file's)")->check(CLI::Range(0, 12));
+  add_depth_option(app, depth,
+                   "Icosphere subdivision depth, 0.." + std::to_string(mesh::kMaxIcosphereDepth) + " (default 3, or the file's)");
   app->add_option("--size", size, "Framebuffer WxH (default: cube 640x640, icosphere 512x512, or the file's)");
   app->add_option("--draw", draw,
                   "How every mesh is sent: arrays (glDrawArrays), elements (glDrawElements), immediate "
                   "(glBegin/glVertex, as seed 004) or auto (default: arrays for face normals, elements otherwise)");
   cam_angle_option = app->add_option("--cam-angle", cam_angle, "Cube camera angle around y, degrees (built-in cube only)")->capture_default_str();
   cam_height_option = app->add_option("--cam-height", cam_height, "Cube camera height (built-in cube only)")->capture_default_str();
-  app->add_option("--backend", backend, "Renderer: mesa")->capture_default_str();
+  if (with_backend)
+    app->add_option("--backend", backend,
+                    "Renderer: mesa (Mesa's fixed-function pipeline, OSMesa), soft (ours, float) or soft-double (ours, double)")
+        ->check(CLI::IsMember(kBackendNames))
+        ->capture_default_str();
 }
 
 static void parse_size(const std::string& size, int& width, int& height) {
@@ -39,6 +72,9 @@ scene::Spec SceneOptions::spec() const {
   if (is_file()) throw std::invalid_argument("--scene '" + scene + "' is a scene file, not a built-in scene");
   if (scene != "cube" && scene != "icosphere")
     throw std::invalid_argument("unknown scene '" + scene + "' (cube, icosphere, or a .toml scene file)");
+  if (scene != "cube" && ((cam_angle_option && cam_angle_option->count()) || (cam_height_option && cam_height_option->count())))
+    throw std::invalid_argument("--cam-angle and --cam-height move the built-in cube's camera; the built-in " + scene +
+                                "'s camera is fixed (a scene file can place its own [camera])");
   scene::Spec s = scene::builtin(scene);
   if (!shade.empty()) s.shade = scene::parse_shade(shade);
   if (!normals.empty()) s.normals = mesh::parse_normal_source(normals);

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "image/compare.h"
 #include "scene/file.h"
@@ -21,7 +22,9 @@ struct SceneOptions {
   double cam_angle = 0, cam_height = 1;
   const CLI::Option* cam_angle_option = nullptr;   // set by add_to: whether the camera was moved
   const CLI::Option* cam_height_option = nullptr;
-  void add_to(CLI::App* app, bool with_shade_and_normals = true);
+  // with_backend: --backend picks the renderer (render, shading); a command that always uses its
+  // own renderers (check, bench) leaves it out and refuses it with refuse_option.
+  void add_to(CLI::App* app, bool with_shade_and_normals = true, bool with_backend = true);
   bool is_file() const { return scene::is_scene_file(scene); }
   // A built-in scene with the options applied. Throws std::invalid_argument for a bad value or a
   // scene file (use description()).
@@ -43,6 +46,17 @@ nlohmann::json to_json(const image::Diff& d);
 void print_json(const nlohmann::json& j);
 // C++ heap allocations made so far by this process (alloc_count.cpp).
 uint64_t allocations();
+
+// Adds the --depth option (0..mesh::kMaxIcosphereDepth; beyond, the error says why).
+void add_depth_option(CLI::App* app, int& depth, const std::string& help);
+
+// An option the command does not take although a user may reach for it (another command's, or a
+// near miss): accepted by the parser only to be refused with `why`, which names what applies.
+// Hidden from --help.
+void refuse_option(CLI::App* app, const std::string& name, const std::string& why);
+
+// The backends by name, for --backend's choices and help.
+extern const std::vector<std::string> kBackendNames;
 
 void add_render(CLI::App& app);
 void add_normals(CLI::App& app);

@@ -1,5 +1,6 @@
 // ffcompat: the legacy fixed-function lighting pipeline, rendered and compared.
 #include <iostream>
+#include <string>
 
 #include "cli/common.h"
 
@@ -10,6 +11,13 @@ void add_report(CLI::App& app);  // report.cpp
 void add_stress(CLI::App& app);  // stress.cpp
 }
 
+// Exit codes, the same for every command (README, "The command line"):
+//   0  done (a check passed)
+//   1  usage or input error: an unknown command or option, a bad value, an option the command does
+//      not take, a missing, unreadable or invalid file; the message says which and what applies
+//   2  a check ran and failed (check, stress; the examples' --check)
+// CLI11's own codes for parse errors (105-109 and others) are folded into 1: a script needs to
+// know "you called me wrong", not which of CLI11's error classes it was.
 int main(int argc, char** argv) {
   CLI::App app{"ffcompat: legacy OpenGL fixed-function lighting, rendered and checked against Mesa"};
   app.require_subcommand(1);
@@ -21,10 +29,27 @@ int main(int argc, char** argv) {
   ffc::cli::add_bench(app);
   ffc::cli::add_report(app);
   ffc::cli::add_stress(app);
+  // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
+  std::string commands;
+  bool known = false;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    known |= argc >= 2 && sub->get_name() == argv[1];
+  }
+  if (argc < 2 || (argv[1][0] != '-' && !known)) {
+    if (argc < 2)
+      std::cerr << "ffcompat: a command is required: " << commands << " (ffcompat --help)\n";
+    else
+      std::cerr << "ffcompat: unknown command '" << argv[1] << "'; the commands are " << commands << " (ffcompat --help)\n";
+    return 1;
+  }
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {  // thrown by a command with its exit code (2: check failed)
+    return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int code = app.exit(e);  // prints the message (or the help, for --help: code 0)
+    return code == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::cerr << "ffcompat: " << e.what() << "\n";
     return 1;

@@ -11,7 +11,7 @@ void add_normals(CLI::App& app) {
   auto opts = std::make_shared<SceneOptions>();
   auto json = std::make_shared<bool>(false);
   cmd->add_option("--scene", opts->scene, "Scene: cube, icosphere, or a TOML scene file (*.toml)")->capture_default_str();
-  cmd->add_option("--depth", opts->depth, "Icosphere subdivision depth (default 3)")->check(CLI::Range(0, 12));
+  add_depth_option(cmd, opts->depth, "Icosphere subdivision depth (default 3)");
   cmd->add_option("--normals", opts->normals, "face, average, area, angle, max, sphere or file (default: the scene's)");
   cmd->add_flag("--json", *json, "Print an array of {vertex, position, normal} rows");
   cmd->callback([=] {

@@ -45,9 +45,16 @@ std::vector<Tri> icosahedron_triangles() {
   return t;
 }
 
+std::string icosphere_depth_error(int depth) {
+  if (depth >= 0 && depth <= kMaxIcosphereDepth) return "";
+  if (depth < 0) return "icosphere depth " + std::to_string(depth) + " is negative (0.." + std::to_string(kMaxIcosphereDepth) + ")";
+  return "icosphere depth " + std::to_string(depth) + " is beyond the limit of " + std::to_string(kMaxIcosphereDepth) +
+         ": each level quadruples the triangles and the memory (depth 10: 21 million triangles, about 6 GB; "
+         "depth 11 would need about 24 GB)";
+}
+
 Mesh make_icosphere(int depth) {
-  if (depth < 0 || depth > 12)
-    throw std::invalid_argument("icosphere depth " + std::to_string(depth) + " is outside 0..12");
+  if (const std::string e = icosphere_depth_error(depth); !e.empty()) throw std::invalid_argument(e);
   std::vector<Vec3> pos = icosahedron_positions();
   std::vector<Tri> tris = icosahedron_triangles();
   for (int level = 0; level < depth; ++level) {

@@ -180,6 +180,10 @@ mesh::Mesh build_mesh(const Object& o) {
 }
 
 mesh::Layout layout(const Object& o) {
+  if (o.kind == Object::Kind::File && o.file_normals) {
+    const std::shared_ptr<const MeshFile> f = o.file ? o.file : std::make_shared<MeshFile>(read_mesh_file(o.path));
+    if (f->corner_normals) return *f->corner_normals;  // per-corner normals, vertices split
+  }
   // File normals are the vertex normals as read: the shared-vertex layout of averaged normals
   // (which reads the mesh's vertex normals) takes them as they stand, since build_mesh left them.
   return mesh::layout(build_mesh(o), o.file_normals ? mesh::NormalSource::Average : o.normals);

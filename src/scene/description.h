@@ -117,6 +117,10 @@ const char* to_string(Camera::Projection p);
 struct MeshFile {
   mesh::Mesh mesh;
   bool has_normals = false;
+  // An OBJ whose faces give one vertex several normals (per-corner `f v//vn`): the triangles with
+  // those vertices split, one per normal, so that `normals = "file"` draws every corner's own.
+  // Empty when the per-vertex normals in `mesh` already say everything.
+  std::optional<mesh::Layout> corner_normals;
 };
 
 // One mesh of the scene, drawn inside glPushMatrix / glPopMatrix after the scene's transforms.

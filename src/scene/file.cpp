@@ -70,7 +70,7 @@
 //
 //   [[mesh]]                        # at least one; drawn in order, each in glPushMatrix/glPopMatrix
 //   source = "cube"                 # required: "cube" (the seeds' cube of side 2), "icosphere:N"
-//                                   #   (depth N = 0..12; "icosphere" is depth 3), or a mesh file
+//                                   #   (depth N = 0..10; "icosphere" is depth 3), or a mesh file
 //                                   #   (.obj, .off, .ply, .stl) relative to this file's folder
 //   normals = "face"                # face | average | area | angle | max | sphere | file (the file's);
 //                                   #   any other name mesh::parse_normal_source knows
@@ -98,6 +98,7 @@
 #include <toml++/toml.h>
 #include <type_traits>
 
+#include "mesh/icosphere.h"
 #include "scene/mesh_file.h"
 
 namespace ffc::scene {
@@ -512,7 +513,9 @@ class Parser {
       if (s != "icosphere") {
         const std::string n = s.substr(10);
         const bool digits = !n.empty() && n.size() <= 3 && n.find_first_not_of("0123456789") == std::string::npos;
-        if (!digits || std::stoi(n) > 12) fail(*src, w + ".source: '" + s + "': the icosphere depth must be 0..12");
+        if (!digits)
+          fail(*src, w + ".source: '" + s + "': the icosphere depth must be a number 0.." + std::to_string(mesh::kMaxIcosphereDepth));
+        if (const std::string e = mesh::icosphere_depth_error(std::stoi(n)); !e.empty()) fail(*src, w + ".source: " + e);
         o.depth = std::stoi(n);
       }
     } else {
@@ -578,12 +581,28 @@ Description parse_scene(std::string_view text, const std::string& path) {
 
 Description load_file(const std::string& path) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw FileError(path, 0, 0, "the scene file does not exist");
-  if (fs::is_directory(path, ec)) throw FileError(path, 0, 0, "is a directory, not a scene file");
+  // fs::status follows links: a link to /dev/zero is a character device, not a scene file.
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw FileError(path, 0, 0, "the scene file does not exist");
+  if (fs::is_directory(st)) throw FileError(path, 0, 0, "is a directory, not a scene file");
+  // A FIFO would block the read until a writer came; a device like /dev/zero never ends.
+  if (!fs::is_regular_file(st)) throw FileError(path, 0, 0, "is not a regular file (a FIFO, device or socket), not a scene file");
+  const uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw FileError(path, 0, 0, "the scene file cannot be read: " + ec.message());
+  if (size > kMaxSceneFileBytes)
+    throw FileError(path, 0, 0, "the scene file is " + std::to_string(size) + " bytes, over the limit of " +
+                                    std::to_string(kMaxSceneFileBytes) + " (a scene file is a page of TOML; meshes go in mesh files)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, 0, 0, "the scene file cannot be opened");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Read at most the limit, even if the file grew since it was measured.
+  std::string text;
+  char chunk[65536];
+  while (in && text.size() <= kMaxSceneFileBytes) {
+    in.read(chunk, sizeof chunk);
+    text.append(chunk, size_t(in.gcount()));
+  }
   if (in.bad()) throw FileError(path, 0, 0, "the scene file cannot be read");
+  if (text.size() > kMaxSceneFileBytes) throw FileError(path, 0, 0, "the scene file grew past the size limit while being read");
   return parse_scene(text, path);
 }
 

@@ -1,5 +1,6 @@
 // Scene files: a Description in TOML (schema at the top of file.cpp and in scenes/README.md).
 #pragma once
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -29,6 +30,9 @@ class FileError : public std::runtime_error {
 // Reads and checks a scene file, and the mesh files it names (relative to its folder). Returns the
 // Description only when everything is valid; throws FileError otherwise.
 Description load_file(const std::string& path);
+// The largest scene file load_file reads. Scene files are a page or two of TOML (the shipped ones
+// are under 4 KiB); the limit only stops a runaway read (a huge or endless file).
+constexpr uintmax_t kMaxSceneFileBytes = uintmax_t(4) << 20;
 
 // The same for TOML text; `path` names it in messages and anchors relative mesh paths.
 Description parse_scene(std::string_view toml, const std::string& path);

@@ -4,6 +4,7 @@
 #include "scene/mesh_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -184,6 +186,103 @@ void check_obj(const std::string& data) {
       }
     }
   }
+}
+
+// --- OBJ per-corner normals. OpenMesh keeps one normal per vertex: where a face corner names
+// another normal for a vertex than an earlier face did (`f v//vn` as Blender writes hard edges),
+// the last face's wins for every face. To draw what the file says, the corners are read here and
+// a vertex is split into one per distinct normal it has. Called on files check_obj accepted.
+struct ObjCorners {
+  std::vector<OpenMesh::Vec3d> normals;              // the vn lines, as floats (as OpenMesh reads them)
+  std::vector<std::vector<std::pair<long long, long long>>> faces;  // per corner: v, vn (0-based; vn -1: none)
+  long long vertices = 0;
+};
+
+ObjCorners read_obj_corners(const std::string& data) {
+  ObjCorners out;
+  std::istringstream in(data);
+  std::string line;
+  for (; std::getline(in, line);) {
+    const size_t first = line.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos || line[first] == '#' || std::isspace(static_cast<unsigned char>(line[first]))) continue;
+    const auto t = tokens(line);
+    if (t.empty()) continue;
+    if (t[0] == "v") ++out.vertices;
+    if (t[0] == "vn") {
+      float x = 0, y = 0, z = 0;
+      std::istringstream(t[1]) >> x, std::istringstream(t[2]) >> y, std::istringstream(t[3]) >> z;
+      out.normals.push_back({x, y, z});
+    }
+    if (t[0] != "f") continue;
+    std::vector<std::pair<long long, long long>> face;
+    for (size_t k = 1; k < t.size(); ++k) {
+      const std::string& c = t[k];
+      auto index = [](const std::string& idx, long long defined) {  // 1-based or counting back
+        if (idx.empty()) return -1LL;
+        const long long i = std::stoll(idx);
+        return i < 0 ? defined + i : i - 1;
+      };
+      const size_t s1 = c.find('/');
+      const size_t s2 = s1 == std::string::npos ? std::string::npos : c.find('/', s1 + 1);
+      const long long v = index(c.substr(0, s1), out.vertices);
+      const long long vn = s2 == std::string::npos ? -1 : index(c.substr(s2 + 1), (long long)out.normals.size());
+      face.push_back({v, vn});
+    }
+    out.faces.push_back(std::move(face));
+  }
+  return out;
+}
+
+// The file's faces as OpenMesh triangulated them (a fan from the first corner), each corner with
+// the normal the file gives it; vertices split where they carry different normals. Empty when no
+// vertex needs splitting (OpenMesh's per-vertex normals are then the file's) or a corner has no
+// normal. Throws when OpenMesh's triangles cannot be matched to the file's faces.
+std::optional<mesh::Layout> obj_corner_layout(const std::string& data, const mesh::Mesh& m, const std::string& name) {
+  const ObjCorners c = read_obj_corners(data);
+  std::vector<std::optional<OpenMesh::Vec3d>> first_normal(size_t(c.vertices));
+  bool split = false;
+  for (const auto& f : c.faces)
+    for (const auto& [v, vn] : f) {
+      if (vn < 0) return std::nullopt;  // a corner without a normal: the per-vertex normals stand
+      auto& seen = first_normal[size_t(v)];
+      if (!seen) seen = c.normals[size_t(vn)];
+      split |= *seen != c.normals[size_t(vn)];
+    }
+  if (!split) return std::nullopt;
+  auto mismatch = [&] {
+    return std::runtime_error(name + ": its faces give a vertex several normals, and OpenMesh's triangles could not be "
+                              "matched to the file's faces to keep them");
+  };
+  if ((long long)m.n_vertices() != c.vertices) throw mismatch();
+  mesh::Layout l;
+  std::map<std::pair<long long, std::array<double, 3>>, uint32_t> made;  // (vertex, normal) -> layout vertex
+  auto vertex = [&](long long v, long long vn) {
+    const OpenMesh::Vec3d& n = c.normals[size_t(vn)];
+    const auto key = std::make_pair(v, std::array<double, 3>{n[0], n[1], n[2]});
+    auto [it, fresh] = made.try_emplace(key, uint32_t(l.vertices.size()));
+    if (fresh) {
+      const auto p = m.point(mesh::Mesh::VertexHandle(int(v)));
+      l.vertices.push_back({int(v), {p[0], p[1], p[2]}, {n[0], n[1], n[2]}});
+    }
+    return it->second;
+  };
+  size_t face_index = 0;
+  for (const auto& f : c.faces)
+    for (size_t i = 1; i + 1 < f.size(); ++i, ++face_index) {
+      const std::pair<long long, long long> tri[3] = {f[0], f[i], f[i + 1]};
+      if (face_index >= m.n_faces()) throw mismatch();
+      // OpenMesh's face starts at one of its halfedges: the same triangle, maybe rotated.
+      std::vector<int> fv;
+      for (auto v : m.fv_range(m.face_handle(unsigned(face_index)))) fv.push_back(v.idx());
+      if (fv.size() != 3) throw mismatch();
+      int rot = -1;
+      for (int r = 0; r < 3 && rot < 0; ++r)
+        if (fv[size_t(r)] == tri[0].first && fv[size_t((r + 1) % 3)] == tri[1].first && fv[size_t((r + 2) % 3)] == tri[2].first) rot = r;
+      if (rot < 0) throw mismatch();
+      for (const auto& [v, vn] : tri) l.indices.push_back(vertex(v, vn));
+    }
+  if (face_index != m.n_faces()) throw mismatch();
+  return l;
 }
 
 // --- PLY: walk the whole body as the header describes it, so no count can run past the file ---
@@ -417,6 +516,7 @@ MeshFile read_mesh_file(const std::string& path) {
     if (out.has_normals && (!finite(out.mesh.normal(v)) || out.mesh.normal(v).sqrnorm() == 0)) out.has_normals = false;
   if (!out.has_normals)  // the property holds whatever the reader left there
     for (auto v : out.mesh.vertices()) out.mesh.set_normal(v, OpenMesh::Vec3d(0, 0, 0));
+  if (out.has_normals && ext == ".obj") out.corner_normals = obj_corner_layout(data, out.mesh, name);
   return out;
 }
 

@@ -795,8 +795,21 @@ void Context::prepare_lighting() {
     deviations_.insert("feedback reports only the primary colour under GL_SEPARATE_SPECULAR_COLOR");
   if (any_light && model_.two_side && m.color_material && cm_face_ != GL_FRONT)
     deviations_.insert("two-sided lighting with a GL_BACK colour material is broken in Mesa 22.3");
-  if (any_light && (model_.two_side || m.color_material) &&
-      (materials_[0].shininess == 0 || (model_.two_side && materials_[1].shininess == 0)))
+  // Shininess 0, found case by case against Mesa 22.3's feedback (ffvertex_prog.c). When every
+  // lit face has shininess 0, Mesa builds its shininess-0 program: exact for a light without
+  // attenuation or spot, but for an attenuated point light or a spot light it runs LIT on n.L in
+  // every component, so the specular factor is pow(n.L, n.L) (0.71 at n.L = 0.5) instead of 1.
+  // When one face has shininess 0 and the other not (two-sided lighting), the ordinary LIT path
+  // takes pow(0, 0) as 0 where n.h <= 0 < n.L.
+  const bool face_zero[2] = {materials_[0].shininess == 0, model_.two_side && materials_[1].shininess == 0};
+  const bool all_zero = face_zero[0] && (!model_.two_side || face_zero[1]);
+  const lighting::Key lk = key();
+  if (all_zero && lk.specular())
+    for (int i = 0; i < 8; ++i)
+      if (lk.enabled(i) && (lk.spot(i) || lk.attenuated(i)))
+        deviations_.insert("shininess 0 with an attenuated or spot light: Mesa's LIT path raises n.L to the power n.L "
+                           "for the specular factor where the spec gives 1");
+  if (any_light && lk.specular() && !all_zero && (face_zero[0] || face_zero[1]))
     deviations_.insert("shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1");
   // "Constants changed" re-prepares; the kernel for the pipeline's shape comes from the key.
   const lighting::Key k = key();

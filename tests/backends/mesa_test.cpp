@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "backends/backend.h"
+#include "gl/dispatch.h"
 #include "mesh/icosphere.h"
 #include "scene/scene.h"
 
@@ -111,6 +112,60 @@ TEST(MesaBackend, RejectsAnImpossibleFramebuffer) {
   auto mesa = backends::make("mesa");
   EXPECT_THROW(mesa->begin(0, 10), std::runtime_error);
   EXPECT_THROW(backends::make("vulkan"), std::invalid_argument);
+}
+
+// Immediate-mode vertices Mesa has queued but not drawn, then the context goes away: a second
+// begin() (a fresh context) or the backend's destruction. Before the backend finished the
+// context first, Mesa 22.3 crashed inside OSMesaDestroyContext. Each case runs in a child
+// process (a death test's fork), so a crash fails the case instead of ending the test binary.
+void draw_unflushed_triangles() {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < 300; ++i) {
+    const float x = float(i % 20) / 10 - 1, y = float(i / 20) / 15 - 1;
+    glNormal3f(0, 0, 1);
+    glVertex3f(x, y, 0);
+    glVertex3f(x + 0.1f, y, 0);
+    glVertex3f(x, y + 0.1f, 0);
+  }
+  glEnd();  // no glFinish, no read-back
+}
+
+TEST(MesaBackendDeathTest, UnflushedImmediateModeThenBeginAgain) {
+  EXPECT_EXIT(
+      {
+        auto mesa = backends::make("mesa");
+        mesa->begin(64, 64);
+        draw_unflushed_triangles();
+        mesa->begin(32, 32);
+        draw_unflushed_triangles();
+        mesa.reset();
+        std::exit(0);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+TEST(MesaBackendDeathTest, UnflushedImmediateModeThenDestroyWhileAnotherIsCurrent) {
+  EXPECT_EXIT(
+      {
+        auto a = backends::make("mesa");
+        auto b = backends::make("mesa");
+        a->begin(64, 64);
+        draw_unflushed_triangles();
+        b->begin(64, 64);  // now b is current, a still holds its queue
+        a.reset();
+        // b is current again and still draws.
+        glClearColor(1, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const image::Image img = b->read();
+        std::exit(img.at(5, 5)[0] == 255 ? 0 : 3);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

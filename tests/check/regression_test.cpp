@@ -2,11 +2,16 @@
 // our pictures within one 8-bit step of Mesa's on every pixel, over the built-in scenes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <map>
+#include <set>
+
 #include "backends/backend.h"
 #include "check/vertex_check.h"
 #include "image/compare.h"
 #include "scene/file.h"
 #include "scene/scene.h"
+#include "report/regression.h"
 #include "state/context.h"
 
 namespace ffc {
@@ -77,6 +82,49 @@ TEST_P(Shipped, VertexColoursWithin1e5AndPixelsWithinOneStep) {
 INSTANTIATE_TEST_SUITE_P(Scenes, Shipped,
                          ::testing::Values("cube", "icosphere", "material_grid", "spotlight", "two_sided",
                                            "color_material", "eight_lights"));
+
+// The dense camera sweep (report::camera_sweep): every view's picture within one step of Mesa's,
+// except the listed known failures, which must still stay small (a few silhouette pixels) and are
+// reported when they pass, so that the list can shrink. One test over every view: a picture pair
+// costs milliseconds, a test case of its own would cost more in output than in time.
+TEST(CameraSweep, PixelsWithinOneStepOfMesaFromEveryCamera) {
+  const auto views = report::camera_sweep();
+  ASSERT_GE(views.size(), 700u);
+  std::map<std::string, std::string> known;
+  for (const auto& k : report::known_pixel_failures()) known[k.view] = k.why;
+  auto mesa = backends::make("mesa"), soft = backends::make("soft");
+  std::vector<std::string> failed, known_failed, known_passed;
+  for (const auto& v : views) {
+    const image::Image a = scene::render(v.scene, *mesa), b = scene::render(v.scene, *soft);
+    const image::Diff d = image::compare(a, b);
+    const bool pass = d.max_diff <= 1;
+    if (known.count(v.name)) {
+      (pass ? known_passed : known_failed).push_back(v.name);
+      // A known GL_FLAT failure is a few pixels where faces meet, not a different picture. (The
+      // smooth_face ones at height 3 differ on 10k-30k pixels: a real difference, not yet explained.)
+      if (v.name.find("_flat_") != std::string::npos)
+        EXPECT_LT(d.differing_share * a.width * a.height, 64) << v.name << ": more than a few pixels where faces meet";
+      continue;
+    }
+    if (!pass) failed.push_back(v.name + " (max " + std::to_string(d.max_diff) + ")");
+  }
+  std::string list;
+  for (const auto& f : failed) list += "\n  " + f;
+  EXPECT_TRUE(failed.empty()) << failed.size() << " of " << views.size() << " views differ from Mesa:" << list;
+  for (const auto& k : known_passed)
+    std::printf("[ NOTE ] known failure %s now passes: remove it from report::known_pixel_failures\n", k.c_str());
+  std::printf("[ INFO ] camera sweep: %zu views, %zu known failures still fail, %zu pass\n", views.size(),
+              known_failed.size(), known_passed.size());
+}
+
+TEST(CameraSweep, KnownFailuresNameViewsOfTheSweep) {
+  std::set<std::string> names;
+  for (const auto& v : report::camera_sweep()) names.insert(v.name);
+  for (const auto& k : report::known_pixel_failures()) {
+    EXPECT_TRUE(names.count(k.view)) << k.view;
+    EXPECT_GT(std::string(k.why).size(), 10u) << k.view << ": say why";
+  }
+}
 
 TEST(ThreadCount, DoesNotChangeThePicture) {
   // Bands of rows go to threads; a pixel is only ever written by one, in primitive order.

@@ -3,7 +3,12 @@
 // before any GL call.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <set>
+
 #include "backends/backend.h"
+#include "check/feedback.h"
 #include "gl/dispatch.h"
 #include "scene/file.h"
 #include "scene/scene.h"
@@ -260,6 +265,48 @@ TEST(DrawOrder, VertexColoursFollowTheirSource) {
   const auto p = scene::vertex_colors(o, l);
   for (size_t i = 0; i < p.size(); ++i)
     for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(p[i][k], float((l.vertices[i].position[k] + 1) / 2));
+}
+
+// Per-corner OBJ normals reach GL: a hard-edged cube (every face's corners name its own normal),
+// drawn unlit with each vertex coloured by its normal, feeds back one colour per triangle, the
+// colour of an axis direction. With one normal per vertex (the last face's, as OpenMesh keeps
+// them) the corners of most triangles had the colours of other faces.
+TEST(DrawOrder, ObjPerCornerNormalsAreTheFedBackOnes) {
+  const auto obj = scene_test::write_file("m/hard_cube_draw.obj",
+      "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+      "vn 0 0 -1\nvn 0 0 1\nvn 0 -1 0\nvn 0 1 0\nvn -1 0 0\nvn 1 0 0\n"
+      "f 1//1 4//1 3//1 2//1\nf 5//2 6//2 7//2 8//2\nf 1//3 2//3 6//3 5//3\n"
+      "f 4//4 8//4 7//4 3//4\nf 1//5 5//5 8//5 4//5\nf 2//6 3//6 7//6 6//6\n");
+  const scene::Description d = scene::parse_scene(R"(
+size = [64, 64]
+lighting = false
+depth_test = false
+[[mesh]]
+source = ")" + obj.string() + R"("
+normals = "file"
+color = "normal"
+transforms = [{ scale = [0.5, 0.5, 0.5] }]
+)", "t.toml");
+  for (auto path : {scene::DrawPath::Arrays, scene::DrawPath::Elements, scene::DrawPath::Immediate}) {
+    SCOPED_TRACE(scene::to_string(path));
+    scene::Description dp = d;
+    dp.objects[0].draw = path;
+    auto mesa = backends::make("mesa");
+    const auto prims = check::capture(*mesa, dp.width, dp.height, [&] { scene::draw(dp); });
+    ASSERT_EQ(prims.size(), 12u);  // no culling, nothing clipped: every triangle fed back
+    std::set<std::array<long, 3>> normals;
+    for (const auto& p : prims) {
+      ASSERT_EQ(p.vertices.size(), 3u);
+      for (const auto& v : p.vertices) {
+        EXPECT_EQ(v.color, p.vertices[0].color) << "a triangle's corners carry one face normal";
+        std::array<long, 3> n;
+        for (int k = 0; k < 3; ++k) n[size_t(k)] = std::lround(2 * v.color[k] - 1);
+        EXPECT_EQ(std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]), 1) << "an axis direction";
+        normals.insert(n);
+      }
+    }
+    EXPECT_EQ(normals.size(), 6u);  // the file's six normals, each on its own face
+  }
 }
 
 }  // namespace

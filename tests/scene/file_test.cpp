@@ -1,6 +1,11 @@
 // Scene files: the schema's values land in the Description, and every mistake is a FileError
 // pointing at the file, line and column, with nothing returned.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "scene/file.h"
 #include "scene_test_util.h"
@@ -246,8 +251,11 @@ std::vector<Bad> bad_files() {
       {"rotate_zero_axis", "transforms = [{ rotate = [30, 0, 0, 0] }]" + mesh, 1, 26, "the axis [0, 0, 0] has no direction"},
       {"no_mesh", "shade = \"flat\"\n", 1, 1, "a scene needs at least one [[mesh]]"},
       {"mesh_without_source", "[[mesh]]\nnormals = \"face\"\n", 1, 1, "mesh[0]: source is required"},
-      {"icosphere_depth_13", "[[mesh]]\nsource = \"icosphere:13\"\n", 2, 10, "the icosphere depth must be 0..12"},
-      {"icosphere_depth_word", "[[mesh]]\nsource = \"icosphere:three\"\n", 2, 10, "the icosphere depth must be 0..12"},
+      {"icosphere_depth_13", "[[mesh]]\nsource = \"icosphere:13\"\n", 2, 10, "icosphere depth 13 is beyond the limit of 10"},
+      // Depths 11 and 12 passed the check once and then ran out of memory half a minute later.
+      {"icosphere_depth_11", "[[mesh]]\nsource = \"icosphere:11\"\n", 2, 10,
+       "mesh[0].source: icosphere depth 11 is beyond the limit of 10: each level quadruples the triangles and the memory"},
+      {"icosphere_depth_word", "[[mesh]]\nsource = \"icosphere:three\"\n", 2, 10, "the icosphere depth must be a number 0..10"},
       {"normals_unknown", "[[mesh]]\nsource = \"cube\"\nnormals = \"vertex\"\n", 3, 11,
        "mesh[0].normals: unknown normal source 'vertex' ("},
       {"normals_file_builtin", "[[mesh]]\nsource = \"cube\"\nnormals = \"file\"\n", 3, 11, "'cube' is built in"},
@@ -303,6 +311,57 @@ TEST(SceneFile, AMissingOrUnreadableSceneFileHasNoLine) {
     EXPECT_NE(std::string(e.what()).find("absent.toml: the scene file does not exist"), std::string::npos) << e.what();
   }
   EXPECT_THROW(scene::load_file(scene_test::temp_dir().string()), FileError);  // a directory
+}
+
+// What is not a regular file is refused before it is opened: a FIFO blocked the open until a
+// writer came, and a link to /dev/zero read until memory ran out. Each runs in a child (a death
+// test's fork) under an alarm, so a hang or a crash fails the case instead of the test binary.
+void expect_refused_quickly(const std::string& path, const std::string& message) {
+  EXPECT_EXIT(
+      {
+        alarm(10);
+        try {
+          scene::load_file(path);
+        } catch (const FileError& e) {
+          const std::string what = e.what();
+          std::exit(e.line() == 0 && what.rfind(path + ": ", 0) == 0 && what.find(message) != std::string::npos ? 0 : 3);
+        }
+        std::exit(4);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+TEST(SceneFileDeathTest, AFifoIsRefusedNotWaitedOn) {
+  const std::string fifo = (scene_test::temp_dir() / "fifo.toml").string();
+  ::unlink(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_refused_quickly(fifo, "is not a regular file");
+  ::unlink(fifo.c_str());
+}
+
+TEST(SceneFileDeathTest, ALinkToDevZeroIsRefusedNotReadForever) {
+  const std::filesystem::path link = scene_test::temp_dir() / "zero.toml";
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink("/dev/zero", link);
+  expect_refused_quickly(link.string(), "is not a regular file");
+  std::filesystem::remove(link);
+}
+
+TEST(SceneFile, AFileOverTheSizeLimitIsRefusedWithItsSize) {
+  const std::filesystem::path big = scene_test::temp_dir() / "big.toml";
+  {
+    std::ofstream out(big, std::ios::binary);
+    const std::string line = "# a comment that makes the file large, and nothing else\n";
+    for (uintmax_t n = 0; n <= scene::kMaxSceneFileBytes; n += line.size()) out << line;
+  }
+  try {
+    scene::load_file(big.string());
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.line(), 0);
+    EXPECT_NE(std::string(e.what()).find("over the limit of 4194304"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(big);
 }
 
 TEST(SceneFile, ErrorsAreFileErrorsAndRuntimeErrors) {

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "scene/mesh_file.h"
+#include "mesh/mesh.h"
 #include "scene_test_util.h"
 
 namespace ffc {
@@ -41,6 +42,41 @@ TEST(MeshFile, ObjWithNormalsKeepsThem) {
   EXPECT_EQ(f.mesh.n_faces(), 1u);
   ASSERT_TRUE(f.has_normals);
   EXPECT_EQ(f.mesh.normal(f.mesh.vertex_handle(1)), OpenMesh::Vec3d(0, 0, 2));  // as written, not normalized
+}
+
+// A cube as Blender writes it with hard edges: 8 vertices, 6 normals, every face's corners naming
+// its own normal (`f v//vn`), so each vertex has three normals. OpenMesh keeps one per vertex.
+const char* kHardCubeObj =
+    "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+    "vn 0 0 -1\nvn 0 0 1\nvn 0 -1 0\nvn 0 1 0\nvn -1 0 0\nvn 1 0 0\n"
+    "f 1//1 4//1 3//1 2//1\nf 5//2 6//2 7//2 8//2\nf 1//3 2//3 6//3 5//3\n"
+    "f 4//4 8//4 7//4 3//4\nf 1//5 5//5 8//5 4//5\nf 2//6 3//6 7//6 6//6\n";
+
+TEST(MeshFile, ObjPerCornerNormalsSplitTheVerticesThatHaveSeveral) {
+  const auto p = write_file("m/hard_cube.obj", kHardCubeObj);
+  const scene::MeshFile f = scene::read_mesh_file(p.string());
+  EXPECT_EQ(f.mesh.n_vertices(), 8u);
+  EXPECT_EQ(f.mesh.n_faces(), 12u);
+  ASSERT_TRUE(f.corner_normals);
+  const mesh::Layout& l = *f.corner_normals;
+  EXPECT_EQ(l.vertices.size(), 24u);  // every corner of the cube three times, one per face normal
+  ASSERT_EQ(l.indices.size(), 36u);
+  // Each triangle's corners carry its face's normal: the outward normal of its plane.
+  for (size_t t = 0; t < 12; ++t) {
+    const auto& a = l.vertices[l.indices[3 * t]];
+    for (int k = 1; k < 3; ++k) EXPECT_EQ(l.vertices[l.indices[3 * t + k]].normal, a.normal) << "triangle " << t;
+    for (int k = 0; k < 3; ++k) {
+      const auto& v = l.vertices[l.indices[3 * t + k]];
+      EXPECT_EQ(v.position, (mesh::Vec3{f.mesh.point(f.mesh.vertex_handle(unsigned(v.source)))[0],
+                                        f.mesh.point(f.mesh.vertex_handle(unsigned(v.source)))[1],
+                                        f.mesh.point(f.mesh.vertex_handle(unsigned(v.source)))[2]}));
+      const double along = v.position[0] * a.normal[0] + v.position[1] * a.normal[1] + v.position[2] * a.normal[2];
+      EXPECT_EQ(along, 1.0) << "triangle " << t << ": the corner lies on the face its normal points out of";
+    }
+  }
+  // A file whose corners agree with one normal per vertex needs no split.
+  const auto q = write_file("m/tri_vn_corner.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
+  EXPECT_FALSE(scene::read_mesh_file(q.string()).corner_normals);
 }
 
 TEST(MeshFile, ObjQuadIsTriangulatedAndHasNoNormals) {

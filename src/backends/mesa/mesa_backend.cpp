@@ -9,8 +9,31 @@
 
 namespace ffc::backends {
 
+namespace {
+
+// Destroys a context after finishing its queued drawing. Mesa 22.3 frees a context's buffers
+// while llvmpipe may still hold immediate-mode vertices for them unflushed: destroying it then
+// (from a later begin() or the destructor) crashes inside OSMesaDestroyContext. glFinish with the
+// context current drains that queue first. The context that was current before (another
+// backend's, possibly) is made current again afterwards, with its own buffer.
+void finish_and_destroy(OSMesaContext ctx, std::vector<uint8_t>& buffer, int width, int height) {
+  const OSMesaContext previous = OSMesaGetCurrentContext();
+  GLint pw = 0, ph = 0, pformat = 0;
+  void* pbuffer = nullptr;
+  const bool restore = previous && previous != ctx && OSMesaGetColorBuffer(previous, &pw, &ph, &pformat, &pbuffer);
+  if (OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
+    // Straight from OSMesa, not through our dispatch: it may point at another backend now.
+    using Finish = void (*)();
+    if (auto finish = reinterpret_cast<Finish>(OSMesaGetProcAddress("glFinish"))) finish();
+  }
+  OSMesaDestroyContext(ctx);
+  if (restore) OSMesaMakeCurrent(previous, pbuffer, GL_UNSIGNED_BYTE, pw, ph);
+}
+
+}  // namespace
+
 MesaBackend::~MesaBackend() {
-  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+  if (context_) finish_and_destroy(static_cast<OSMesaContext>(context_), buffer_, width_, height_);
 }
 
 static void* osmesa_loader(const char* name) {
@@ -22,7 +45,8 @@ void MesaBackend::begin(int width, int height) {
     throw std::runtime_error("mesa: framebuffer size " + std::to_string(width) + "x" +
                              std::to_string(height) + " is outside 1..16384");
   // A fresh context per begin(): every picture starts from GL's default state.
-  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+  if (context_) finish_and_destroy(static_cast<OSMesaContext>(context_), buffer_, width_, height_);
+  context_ = nullptr;
   {
     // A compatibility context: the fixed-function pipeline is what we compare against.
     const int attribs[] = {OSMESA_FORMAT,        OSMESA_RGBA,
