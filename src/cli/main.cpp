@@ -8,6 +8,7 @@ void add_check(CLI::App& app);  // check.cpp
 void add_bench(CLI::App& app);  // bench.cpp
 void add_report(CLI::App& app);  // report.cpp
 void add_stress(CLI::App& app);  // stress.cpp
+void add_fuzz(CLI::App& app);    // fuzz.cpp
 }
 
 int main(int argc, char** argv) {
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_bench(app);
   ffc::cli::add_report(app);
   ffc::cli::add_stress(app);
+  ffc::cli::add_fuzz(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
