@@ -428,7 +428,7 @@ class Gen {
       const double top = type == GL_BYTE ? 127 : type == GL_UNSIGNED_BYTE ? 255 : type == GL_SHORT ? 32767
                        : type == GL_UNSIGNED_SHORT ? 65535 : type == GL_INT ? 2147483647.0 : type == GL_UNSIGNED_INT ? 4294967295.0 : 1;
       emit("glColorPointer", {num(size), num(type), num(st), array(type, size, pad, [&](int) {
-             return type == GL_FLOAT || type == GL_DOUBLE ? colour() : std::round(uni(0, 1) * 8) / 8 * top;
+             return type == GL_FLOAT || type == GL_DOUBLE ? colour() : std::round(std::round(uni(0, 1) * 8) / 8 * top);
            })});
     }
     emit("glEnableClientState", {num(GL_VERTEX_ARRAY)});
@@ -488,7 +488,8 @@ class Gen {
   void get_call() {
     const auto& e = known_enums();
     const GLenum any = e[size_t(pick(int(e.size())))];
-    switch (pick(6)) {
+    switch (pick(7)) {
+      case 6: emit("glGetError", {}); break;
       case 0: emit("glGetFloatv", {num(any), Arg::out(16)}); break;
       case 1: emit("glGetDoublev", {num(any), Arg::out(16)}); break;
       case 2: emit("glGetIntegerv", {num(any), Arg::out(16)}); break;
