@@ -31,7 +31,13 @@ bool reads_unset_array(const Stream& s) {
     if (n == "glEnableClientState" || n == "glDisableClientState") {
       if (const int i = slot(c.args[0].num); i >= 0) enabled[i] = n == "glEnableClientState";
     } else if (n == "glVertexPointer" || n == "glNormalPointer" || n == "glColorPointer") {
-      set[n == "glVertexPointer" ? 0 : n == "glNormalPointer" ? 1 : 2] = c.args.back().kind == Arg::Kind::Blob;
+      // Only a call GL accepts sets the pointer: sizes 2-4 (colours 3-4), a type of the array's,
+      // a stride of at least 0 (the generator's types are all legal ones).
+      const bool normal = n == "glNormalPointer";
+      const double size = normal ? 3 : c.args[0].num, type = c.args[normal ? 0 : 1].num, stride = c.args[normal ? 1 : 2].num;
+      const bool ok = size >= (n == "glColorPointer" ? 3 : 2) && size <= 4 && type_size(GLenum(type)) > 0 && type >= 0 &&
+                      stride >= 0 && c.args.back().kind == Arg::Kind::Blob;
+      set[n == "glVertexPointer" ? 0 : normal ? 1 : 2] = ok;
     } else if (n == "glDrawArrays" || n == "glDrawElements" || n == "glArrayElement") {
       for (int i = 0; i < 3; ++i)
         if (enabled[i] && !set[i]) return true;

@@ -124,7 +124,7 @@ class Gen {
           a.num = chance(0.8) ? known_enums()[size_t(pick(int(known_enums().size())))] : one_of({0.0, double(0x1234), 4294967295.0});
         else if (params[k] == Param::Int) a.num = name == "glArrayElement" ? -1.0 : one_of({-1.0, -100.0});
         else if (params[k] == Param::Bitfield) a.num = one_of({1.0, 2147483648.0, double(GL_COLOR_BUFFER_BIT | 0x2)});
-        else a.num = one_of({-1.0, -0.5, 2.0, 1e6, 200.0});
+        else if (params[k] == Param::Float || params[k] == Param::Double) a.num = one_of({-1.0, -0.5, 2.0, 1e6, 200.0});
       }
     }
     if (o_.has("nonfinite"))
