@@ -418,7 +418,7 @@ class Gen {
       int pad;
       const int st = stride(type, 3, pad);
       const double range = type == GL_BYTE ? 127 : type == GL_SHORT ? 32767 : type == GL_INT ? 2147483647.0 : 1;
-      emit("glNormalPointer", {num(type), num(st), array(type, 3, pad, [&](int) { return std::round(uni(-1, 1) * range * 64) / 64; })});
+      emit("glNormalPointer", {num(type), num(st), array(type, 3, pad, [&](int) { return range == 1 ? std::round(uni(-1, 1) * 64) / 64 : std::round(uni(-1, 1) * range); })});
     }
     {
       const GLenum type = one_of({GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
