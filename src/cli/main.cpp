@@ -9,6 +9,7 @@ void add_check(CLI::App& app);  // check.cpp
 void add_bench(CLI::App& app);  // bench.cpp
 void add_report(CLI::App& app);  // report.cpp
 void add_stress(CLI::App& app);  // stress.cpp
+void add_fuzz(CLI::App& app);    // fuzz.cpp
 }
 
 // Exit codes, the same for every command (README, "The command line"):
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_bench(app);
   ffc::cli::add_report(app);
   ffc::cli::add_stress(app);
+  ffc::cli::add_fuzz(app);
   // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
   std::string commands;
   bool known = false;

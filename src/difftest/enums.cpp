@@ -1,0 +1,122 @@
+// GL enum names for the stream's text format and C snippets. Where GL gives one value several
+// names, the first listed is printed (GL_POINTS for 0 in a primitive is likelier than GL_ZERO).
+#include <cstdio>
+#include <map>
+#include <unordered_map>
+
+#include "difftest/stream.h"
+
+namespace ffc::difftest {
+
+namespace {
+
+struct Names {
+  std::unordered_map<GLenum, std::string> by_value;
+  std::map<std::string, GLenum> by_name;
+  std::vector<GLenum> values;
+};
+
+const Names& names() {
+  static const Names n = [] {
+    Names r;
+#define N(e) {#e, GLenum(e)}
+    const std::pair<const char*, GLenum> list[] = {
+        N(GL_POINTS), N(GL_LINES), N(GL_LINE_LOOP), N(GL_LINE_STRIP), N(GL_TRIANGLES), N(GL_TRIANGLE_STRIP),
+        N(GL_TRIANGLE_FAN), N(GL_QUADS), N(GL_QUAD_STRIP), N(GL_POLYGON),
+        N(GL_NO_ERROR), N(GL_INVALID_ENUM), N(GL_INVALID_VALUE), N(GL_INVALID_OPERATION), N(GL_STACK_OVERFLOW),
+        N(GL_STACK_UNDERFLOW), N(GL_OUT_OF_MEMORY),
+        N(GL_LIGHT0), N(GL_LIGHT1), N(GL_LIGHT2), N(GL_LIGHT3), N(GL_LIGHT4), N(GL_LIGHT5), N(GL_LIGHT6), N(GL_LIGHT7),
+        N(GL_FRONT), N(GL_BACK), N(GL_FRONT_AND_BACK), N(GL_AMBIENT), N(GL_DIFFUSE), N(GL_SPECULAR), N(GL_POSITION),
+        N(GL_SPOT_DIRECTION), N(GL_SPOT_EXPONENT), N(GL_SPOT_CUTOFF), N(GL_CONSTANT_ATTENUATION),
+        N(GL_LINEAR_ATTENUATION), N(GL_QUADRATIC_ATTENUATION), N(GL_EMISSION), N(GL_SHININESS),
+        N(GL_AMBIENT_AND_DIFFUSE), N(GL_COLOR_INDEXES), N(GL_LIGHT_MODEL_AMBIENT), N(GL_LIGHT_MODEL_LOCAL_VIEWER),
+        N(GL_LIGHT_MODEL_TWO_SIDE), N(GL_LIGHT_MODEL_COLOR_CONTROL), N(GL_SINGLE_COLOR),
+        N(GL_SEPARATE_SPECULAR_COLOR), N(GL_SMOOTH), N(GL_FLAT), N(GL_CW), N(GL_CCW),
+        N(GL_MODELVIEW), N(GL_PROJECTION), N(GL_TEXTURE), N(GL_COLOR),
+        N(GL_MODELVIEW_MATRIX), N(GL_PROJECTION_MATRIX), N(GL_TEXTURE_MATRIX), N(GL_MODELVIEW_STACK_DEPTH),
+        N(GL_PROJECTION_STACK_DEPTH), N(GL_MAX_MODELVIEW_STACK_DEPTH), N(GL_MAX_PROJECTION_STACK_DEPTH),
+        N(GL_MATRIX_MODE), N(GL_VIEWPORT), N(GL_MAX_VIEWPORT_DIMS), N(GL_DEPTH_RANGE), N(GL_MAX_LIGHTS),
+        N(GL_SHADE_MODEL), N(GL_COLOR_MATERIAL_FACE), N(GL_COLOR_MATERIAL_PARAMETER), N(GL_FRONT_FACE),
+        N(GL_CULL_FACE_MODE), N(GL_DEPTH_FUNC), N(GL_CURRENT_COLOR), N(GL_CURRENT_NORMAL),
+        N(GL_CURRENT_RASTER_POSITION), N(GL_CURRENT_RASTER_COLOR), N(GL_CURRENT_RASTER_POSITION_VALID),
+        N(GL_COLOR_CLEAR_VALUE), N(GL_DEPTH_CLEAR_VALUE), N(GL_LINE_WIDTH), N(GL_POINT_SIZE), N(GL_RENDER_MODE),
+        N(GL_DEPTH_BITS), N(GL_RED_BITS), N(GL_GREEN_BITS), N(GL_BLUE_BITS), N(GL_ALPHA_BITS), N(GL_STENCIL_BITS),
+        N(GL_DEPTH_WRITEMASK), N(GL_COLOR_WRITEMASK), N(GL_SCISSOR_BOX), N(GL_FOG_MODE), N(GL_FOG_COLOR),
+        N(GL_FOG_DENSITY), N(GL_FOG_START), N(GL_FOG_END), N(GL_POLYGON_MODE), N(GL_POLYGON_OFFSET_FACTOR),
+        N(GL_POLYGON_OFFSET_UNITS), N(GL_BLEND_SRC), N(GL_BLEND_DST), N(GL_READ_BUFFER), N(GL_DRAW_BUFFER),
+        N(GL_DOUBLEBUFFER), N(GL_SUBPIXEL_BITS), N(GL_MAX_TEXTURE_SIZE), N(GL_CLIENT_ACTIVE_TEXTURE),
+        N(GL_VERTEX_ARRAY_SIZE), N(GL_VERTEX_ARRAY_TYPE), N(GL_VERTEX_ARRAY_STRIDE), N(GL_NORMAL_ARRAY_TYPE),
+        N(GL_NORMAL_ARRAY_STRIDE), N(GL_COLOR_ARRAY_SIZE), N(GL_COLOR_ARRAY_TYPE), N(GL_COLOR_ARRAY_STRIDE),
+        N(GL_VERTEX_ARRAY_POINTER), N(GL_FEEDBACK_BUFFER_SIZE), N(GL_FEEDBACK_BUFFER_TYPE),
+        N(GL_FEEDBACK_BUFFER_POINTER), N(GL_RENDER), N(GL_FEEDBACK), N(GL_SELECT), N(GL_2D), N(GL_3D),
+        N(GL_3D_COLOR), N(GL_3D_COLOR_TEXTURE), N(GL_4D_COLOR_TEXTURE), N(GL_POINT_TOKEN), N(GL_LINE_TOKEN),
+        N(GL_POLYGON_TOKEN), N(GL_PASS_THROUGH_TOKEN), N(GL_LINE_RESET_TOKEN),
+        N(GL_VERTEX_ARRAY), N(GL_NORMAL_ARRAY), N(GL_COLOR_ARRAY), N(GL_TEXTURE_COORD_ARRAY), N(GL_INDEX_ARRAY),
+        N(GL_EDGE_FLAG_ARRAY), N(GL_FOG_COORD_ARRAY), N(GL_SECONDARY_COLOR_ARRAY),
+        N(GL_LIGHTING), N(GL_NORMALIZE), N(GL_RESCALE_NORMAL), N(GL_COLOR_MATERIAL), N(GL_DEPTH_TEST),
+        N(GL_CULL_FACE), N(GL_BLEND), N(GL_DITHER), N(GL_LINE_SMOOTH), N(GL_POINT_SMOOTH), N(GL_POLYGON_SMOOTH),
+        N(GL_SCISSOR_TEST), N(GL_STENCIL_TEST), N(GL_ALPHA_TEST), N(GL_FOG), N(GL_TEXTURE_1D), N(GL_TEXTURE_2D),
+        N(GL_TEXTURE_3D), N(GL_TEXTURE_CUBE_MAP), N(GL_MULTISAMPLE), N(GL_POLYGON_OFFSET_FILL),
+        N(GL_POLYGON_OFFSET_LINE), N(GL_POLYGON_OFFSET_POINT), N(GL_LINE_STIPPLE), N(GL_POLYGON_STIPPLE),
+        N(GL_AUTO_NORMAL), N(GL_CLIP_PLANE0), N(GL_CLIP_PLANE1), N(GL_CLIP_PLANE2), N(GL_CLIP_PLANE3),
+        N(GL_CLIP_PLANE4), N(GL_CLIP_PLANE5), N(GL_COLOR_LOGIC_OP), N(GL_COLOR_SUM), N(GL_INDEX_LOGIC_OP),
+        N(GL_MAP1_VERTEX_3), N(GL_MAP2_VERTEX_3), N(GL_POINT_SPRITE), N(GL_SAMPLE_ALPHA_TO_COVERAGE),
+        N(GL_SAMPLE_COVERAGE), N(GL_TEXTURE_GEN_S), N(GL_TEXTURE_GEN_T), N(GL_VERTEX_PROGRAM_POINT_SIZE),
+        N(GL_VERTEX_PROGRAM_TWO_SIDE),
+        N(GL_NEVER), N(GL_LESS), N(GL_EQUAL), N(GL_LEQUAL), N(GL_GREATER), N(GL_NOTEQUAL), N(GL_GEQUAL),
+        N(GL_ALWAYS),
+        N(GL_BYTE), N(GL_UNSIGNED_BYTE), N(GL_SHORT), N(GL_UNSIGNED_SHORT), N(GL_INT), N(GL_UNSIGNED_INT),
+        N(GL_FLOAT), N(GL_DOUBLE), N(GL_BITMAP), N(GL_UNSIGNED_INT_8_8_8_8), N(GL_UNSIGNED_INT_8_8_8_8_REV),
+        N(GL_UNSIGNED_SHORT_5_6_5), N(GL_HALF_FLOAT),
+        N(GL_RGBA), N(GL_RGB), N(GL_BGRA), N(GL_BGR), N(GL_RED), N(GL_GREEN), N(GL_BLUE), N(GL_ALPHA),
+        N(GL_LUMINANCE), N(GL_LUMINANCE_ALPHA), N(GL_DEPTH_COMPONENT), N(GL_STENCIL_INDEX), N(GL_COLOR_INDEX),
+        N(GL_PACK_SWAP_BYTES), N(GL_PACK_LSB_FIRST), N(GL_PACK_ROW_LENGTH), N(GL_PACK_IMAGE_HEIGHT),
+        N(GL_PACK_SKIP_ROWS), N(GL_PACK_SKIP_PIXELS), N(GL_PACK_SKIP_IMAGES), N(GL_PACK_ALIGNMENT),
+        N(GL_UNPACK_SWAP_BYTES), N(GL_UNPACK_LSB_FIRST), N(GL_UNPACK_ROW_LENGTH), N(GL_UNPACK_IMAGE_HEIGHT),
+        N(GL_UNPACK_SKIP_ROWS), N(GL_UNPACK_SKIP_PIXELS), N(GL_UNPACK_SKIP_IMAGES), N(GL_UNPACK_ALIGNMENT),
+        N(GL_VENDOR), N(GL_RENDERER), N(GL_VERSION), N(GL_EXTENSIONS),
+        N(GL_COLOR_BUFFER_BIT), N(GL_DEPTH_BUFFER_BIT), N(GL_STENCIL_BUFFER_BIT), N(GL_ACCUM_BUFFER_BIT),
+    };
+#undef N
+    for (const auto& [name, value] : list) {
+      r.by_name.emplace(name, value);
+      if (r.by_value.emplace(value, name).second) r.values.push_back(value);
+    }
+    return r;
+  }();
+  return n;
+}
+
+}  // namespace
+
+std::string enum_name(GLenum e) {
+  const auto& n = names().by_value;
+  if (auto it = n.find(e); it != n.end()) return it->second;
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%04X", e);
+  return buf;
+}
+
+std::string error_name(GLenum e) { return e == GL_NO_ERROR ? "GL_NO_ERROR" : enum_name(e); }
+
+bool enum_value(const std::string& name, GLenum& out) {
+  const auto& n = names().by_name;
+  auto it = n.find(name);
+  if (it == n.end()) return false;
+  out = it->second;
+  return true;
+}
+
+const std::vector<GLenum>& known_enums() { return names().values; }
+
+int type_size(GLenum type) {
+  switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+}  // namespace ffc::difftest

@@ -1,0 +1,102 @@
+#include "difftest/known.h"
+
+#include <algorithm>
+
+#include "state/context.h"
+
+namespace ffc::difftest {
+
+namespace {
+
+// Whether a call before or at `upto` (the whole stream for -1) matches `pred`.
+template <class Pred>
+bool any_call(const Stream& s, int upto, Pred pred) {
+  const size_t end = upto < 0 ? s.size() : std::min(s.size(), size_t(upto) + 1);
+  for (size_t i = 0; i < end; ++i)
+    if (pred(s[i], i)) return true;
+  return false;
+}
+
+bool is(const Call& c, const char* name) { return name_of(c) == name; }
+
+// Mesa records an error and applies the call anyway: everything after it may differ, but not the
+// error of the call itself, which both sides must raise alike.
+bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& mesa,
+                        bool (*call_matches)(const Call&)) {
+  return any_call(s, m.call, [&](const Call& c, size_t i) {
+    return call_matches(c) && i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR &&
+           !(m.kind == "error" && int(i) == m.call);
+  });
+}
+
+// A deviation soft reported while drawing, which can only change what was drawn.
+KnownDeviation drawn(std::string name, const char* soft_says) {
+  return {std::move(name), soft_says, [soft_says](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
+            const bool drawing = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels";
+            return drawing && std::find(soft.deviations.begin(), soft.deviations.end(), soft_says) != soft.deviations.end();
+          }};
+}
+
+}  // namespace
+
+const std::vector<KnownDeviation>& known_deviations() {
+  static const std::vector<KnownDeviation> v = {
+      {"mesa-negative-stride-applied",
+       "Mesa records GL_INVALID_VALUE for a negative stride in gl*Pointer and sets the array all the same (varray.c); GL ignores the call",
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult&) {
+         return after_mesa_applied(s, m, mesa, [](const Call& c) {
+           return (is(c, "glVertexPointer") || is(c, "glColorPointer")) ? c.args[2].num < 0
+                  : is(c, "glNormalPointer")                            ? c.args[1].num < 0
+                                                                        : false;
+         });
+       }},
+      {"mesa-render-mode-applied",
+       "Mesa records GL_INVALID_OPERATION for glRenderMode(GL_FEEDBACK/GL_SELECT) without a buffer and switches the mode all the same (feedback.c)",
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult&) {
+         return after_mesa_applied(s, m, mesa, [](const Call& c) { return is(c, "glRenderMode"); });
+       }},
+      {"mesa-feedback-null-buffer",
+       "Mesa records GL_INVALID_VALUE for glFeedbackBuffer with a null buffer and sets the buffer's size to 0 all the same (feedback.c)",
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult&) {
+         return after_mesa_applied(s, m, mesa, [](const Call& c) {
+           return is(c, "glFeedbackBuffer") && c.args[2].kind == Arg::Kind::Null;
+         });
+       }},
+      {"mesa-array-element-out-of-range",
+       "Mesa reads outside the client arrays for glArrayElement with an index they do not hold (no error is defined); the values it passes on are garbage",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
+         return any_call(s, m.call, [](const Call& c, size_t) { return is(c, "glArrayElement") && c.args[0].num < 0; });
+       }},
+      {"current-undefined-after-draw",
+       "GL 2.1 section 2.8: with the normal or colour array enabled, the current normal or colour is indeterminate after glDrawArrays / glDrawElements",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
+         const bool normal = m.key.find("GL_CURRENT_NORMAL") != std::string::npos;
+         const bool colour = m.key.find("GL_CURRENT_COLOR") != std::string::npos;
+         if (m.kind != "state" || !(normal || colour) || m.call < 0) return false;
+         // The last call before the checkpoint that sets the attribute.
+         for (int i = m.call - 1; i >= 0; --i) {
+           const std::string& n = name_of(s[size_t(i)]);
+           if (n == "glDrawArrays" || n == "glDrawElements") return true;
+           if (n == "glArrayElement" || n.rfind(normal ? "glNormal3" : "glColor", 0) == 0) return false;
+         }
+         return false;
+       }},
+      drawn("mesa-separate-specular-feedback",
+            "feedback reports only the primary colour under GL_SEPARATE_SPECULAR_COLOR"),
+      drawn("mesa-two-side-back-color-material",
+            "two-sided lighting with a GL_BACK colour material is broken in Mesa 22.3"),
+      drawn("mesa-shininess-zero-pow",
+            "shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1"),
+      drawn("zero-normal-normalize", state::kZeroNormal),
+  };
+  return v;
+}
+
+const KnownDeviation* explain(const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
+  if (m.kind == "crash" || m.kind == "hang") return nullptr;  // never explained away
+  for (const KnownDeviation& d : known_deviations())
+    if (d.explains(s, m, mesa, soft)) return &d;
+  return nullptr;
+}
+
+}  // namespace ffc::difftest
