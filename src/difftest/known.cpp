@@ -87,6 +87,9 @@ const std::vector<KnownDeviation>& known_deviations() {
             "two-sided lighting with a GL_BACK colour material is broken in Mesa 22.3"),
       drawn("mesa-shininess-zero-pow",
             "shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1"),
+      drawn("mesa-shininess-zero-attenuated",
+            "shininess 0 with an attenuated or spot light: Mesa's LIT path raises n.L to the power n.L "
+            "for the specular factor where the spec gives 1"),
       drawn("zero-normal-normalize", state::kZeroNormal),
   };
   return v;

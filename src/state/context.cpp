@@ -1058,10 +1058,19 @@ void Context::fetch_vertex(GLint i) {
   }
 }
 
+// An enabled array that was never given a pointer: GL 2.1 leaves reading it undefined and Mesa
+// reads address 0 (a crash); ours reads nothing: GL_INVALID_OPERATION, as core profiles say of a
+// draw from no buffer.
+bool Context::arrays_readable() {
+  for (const ClientArray* a : {&vertex_array_, &normal_array_, &color_array_})
+    if (a->enabled && !a->pointer) return error(GL_INVALID_OPERATION), false;
+  return true;
+}
+
 void Context::ArrayElement(GLint i) {
   // GL 2.1 defines no error for a negative index, and Mesa raises none (it reads before the
   // arrays); ours ignores the call.
-  if (i < 0) return;
+  if (i < 0 || !arrays_readable()) return;
   if (!in_begin_) {
     // Outside glBegin/glEnd the element still sets the current normal and colour (its vertex has
     // no effect), as in Mesa.
@@ -1108,7 +1117,7 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
   // draws nothing.
-  if (!vertex_array_.enabled || first < 0 || !fits_in_memory(uint64_t(count))) return;
+  if (!vertex_array_.enabled || first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
@@ -1131,7 +1140,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
-  if (!vertex_array_.enabled || !indices || !fits_in_memory(uint64_t(count))) return;
+  if (!vertex_array_.enabled || !indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();

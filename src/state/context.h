@@ -169,6 +169,7 @@ class Context {
                         bool* zero_normal) const;
   void fetch_range(GLint first, GLint count);
   bool fits_in_memory(uint64_t vertices);  // false: GL_OUT_OF_MEMORY recorded
+  bool arrays_readable();                  // false: GL_INVALID_OPERATION recorded
   // The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES, rendering, float):
   // array elements [first, first + count) lit into shaded_, then drawn from shared vertices.
   bool shaded_path(GLenum mode) const;

@@ -112,6 +112,13 @@ TEST(Issue10Soft, HugeDrawsAreOutOfMemory) {
   EXPECT_EQ(ctx.GetError(), GLenum(GL_OUT_OF_MEMORY));
   ctx.DrawArrays(GL_TRIANGLES, 0, 3);  // and the context still draws
   EXPECT_EQ(ctx.GetError(), GLenum(GL_NO_ERROR));
+  // An enabled array with no pointer (the fuzzer's crash: Mesa reads address 0) reads nothing.
+  ctx.EnableClientState(GL_NORMAL_ARRAY);
+  ctx.Begin(GL_POINTS);
+  ctx.ArrayElement(4);
+  ctx.End();
+  ctx.DrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(ctx.GetError(), GLenum(GL_INVALID_OPERATION));
   state::Context::make_current(nullptr);
 }
 
