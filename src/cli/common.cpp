@@ -9,7 +9,7 @@
 
 namespace ffc::cli {
 
-const std::vector<std::string> kBackendNames = {"mesa", "soft", "soft-double"};
+const std::vector<std::string> kBackendNames = {"mesa", "soft", "soft-double", "soft-spec", "soft-double-spec"};
 
 void add_depth_option(CLI::App* app, int& depth, const std::string& help) {
   app->add_option("--depth", depth, help)->check(CLI::Validator(
