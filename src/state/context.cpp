@@ -829,21 +829,8 @@ void Context::Color(double r, double g, double b, double a) {
   color_ = {r, g, b, a};
   if (in_begin_ && !color_varies_) color_varies_ = true, constants_dirty_ = true;
   if (!spec_) return;  // tracked at the next flush (see update_color_material)
-  flushed_color_ = color_;
-  if (!color_material_) return;
-  // The tracked material parameters follow the current colour (their change is applied per
-  // vertex by the lighting stage, so the constants stay valid).
-  for (int f = 0; f < 2; ++f) {
-    if (!(model_.cm_faces >> f & 1)) continue;
-    lighting::MaterialParams& m = materials_[f];
-    switch (cm_mode_) {
-      case GL_AMBIENT: m.ambient = color_; break;
-      case GL_DIFFUSE: m.diffuse = color_; break;
-      case GL_SPECULAR: m.specular = color_; break;
-      case GL_EMISSION: m.emission = color_; break;
-      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = color_; break;
-    }
-  }
+  flushed_color_ = color_;  // GL 2.1: tracked at once
+  update_color_material();
 }
 
 void Context::update_vertex_constants() {
