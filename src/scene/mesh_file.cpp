@@ -1,4 +1,6 @@
 // OpenMesh's IO header before the mesh header, so its readers and the mesh's IO adapters are known.
+#include <cerrno>
+#include <cstdlib>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
 #include "scene/mesh_file.h"
@@ -209,8 +211,10 @@ ObjCorners read_obj_corners(const std::string& data) {
     if (t.empty()) continue;
     if (t[0] == "v") ++out.vertices;
     if (t[0] == "vn") {
-      float x = 0, y = 0, z = 0;
-      std::istringstream(t[1]) >> x, std::istringstream(t[2]) >> y, std::istringstream(t[3]) >> z;
+      float x = 0, y = 0, z = 0;  // missing components read as 0 (the triangle match catches a bad file)
+      if (t.size() > 1) std::istringstream(t[1]) >> x;
+      if (t.size() > 2) std::istringstream(t[2]) >> y;
+      if (t.size() > 3) std::istringstream(t[3]) >> z;
       out.normals.push_back({x, y, z});
     }
     if (t[0] != "f") continue;
@@ -218,8 +222,11 @@ ObjCorners read_obj_corners(const std::string& data) {
     for (size_t k = 1; k < t.size(); ++k) {
       const std::string& c = t[k];
       auto index = [](const std::string& idx, long long defined) {  // 1-based or counting back
-        if (idx.empty()) return -1LL;
-        const long long i = std::stoll(idx);
+        // Not a number, or out of range (fuzz: "1///1" leaves "/1" here): no index, never a throw.
+        errno = 0;
+        char* end = nullptr;
+        const long long i = std::strtoll(idx.c_str(), &end, 10);
+        if (idx.empty() || end == idx.c_str() || errno == ERANGE) return -1LL;
         return i < 0 ? defined + i : i - 1;
       };
       const size_t s1 = c.find('/');
