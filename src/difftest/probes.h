@@ -1,7 +1,6 @@
-// The checkpoint read-back: every glGet value the state tests (tests/state/harness.h) compare,
-// read on the current context. The list is the harness's, kept here because the library cannot
-// include the tests' GoogleTest header; names soft does not report yet are fuzzed as arguments of
-// in-stream glGet calls instead (generator category "get"), so checkpoints stay meaningful.
+// The read-back of GL state: every glGet value that the fuzzer compares at its checkpoints and the
+// state tests (tests/state/harness.h) compare after each case, read on the current context. One
+// list for both: a name added here is checked by both.
 #pragma once
 #include <GL/gl.h>
 
@@ -18,6 +17,12 @@ struct Probe {
   int slots;    // values read back, sentinel-initialised (a short write shows as the sentinel)
 };
 
+// The parameters read back: of glGetLightfv, of glGetMaterialfv, of glGet*v, and the capabilities
+// glIsEnabled answers for (each also read through glGet*v).
+const std::vector<GLenum>& light_pnames();
+const std::vector<GLenum>& material_pnames();
+const std::vector<GLenum>& get_pnames();
+const std::vector<GLenum>& capabilities();
 const std::vector<Probe>& probes();
 std::string probe_name(const Probe& p);
 
@@ -26,9 +31,9 @@ std::vector<double> read_back();
 
 // The probe that value i of a read-back belongs to (nullptr for the trailing error).
 const Probe* probe_of(size_t i);
-// Whether values a and b of slot i agree: floats and doubles within 1e-6 relative to
-// max(1, |a|, |b|), integers exactly, the matrices' integers within 1e-6 of 2^31 (Mesa maps them
+// Whether values a and b of slot i agree: floats and doubles within rel relative to
+// max(1, |a|, |b|), integers exactly, the matrices' integers within rel of 2^31 (Mesa maps them
 // like colours), NaN equal to NaN.
-bool slot_close(size_t i, double a, double b);
+bool slot_close(size_t i, double a, double b, double rel = 1e-6);
 
 }  // namespace ffc::difftest
