@@ -575,6 +575,12 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     }
     case GL_FEEDBACK_BUFFER_SIZE: FFC_GET(double(feedback_size_)); break;
     case GL_FEEDBACK_BUFFER_TYPE: FFC_GET(double(feedback_type_)); break;
+    case GL_CURRENT_RASTER_POSITION:
+      FFC_GET(raster_pos_.window.x, raster_pos_.window.y, raster_pos_.window.z, raster_pos_.window.w);
+      break;
+    case GL_CURRENT_RASTER_COLOR: vec4(raster_pos_.color, true); break;
+    case GL_CURRENT_RASTER_POSITION_VALID: FFC_GET(double(raster_pos_.valid)); break;
+    case GL_CURRENT_RASTER_DISTANCE: FFC_GET(raster_pos_.distance); break;
     default: {
       const int on = enabled_state(pname);  // every capability glIsEnabled knows is also a glGet value
       if (on >= 0) {

@@ -283,6 +283,7 @@ class Context {
     bool valid = true;
     glm::dvec4 window{0, 0, 0, 1};
     glm::dvec4 color{1, 1, 1, 1};
+    double distance = 0;  // from the eye
   } raster_pos_;
 
   // Feedback

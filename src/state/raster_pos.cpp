@@ -13,6 +13,8 @@
 #include <set>
 #include <utility>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "raster/span.h"
 #include "state/context.h"
 #include "state/float_matrix.h"
@@ -30,6 +32,8 @@ void Context::RasterPos(double x, double y, double z, double w) {
   const raster::WindowVertex wv = raster::map_to_window(v.clip, raster_state());
   raster_pos_.window = glm::dvec4(wv.pos, v.clip.w);
   raster_pos_.color = v.front;
+  const glm::dvec4 eye = to_eye(glm::value_ptr(glm::dvec4(x, y, z, w)), w);
+  raster_pos_.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
 }
 
 namespace {
@@ -111,7 +115,7 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
   // Pixel (i, j) covers the window square with its lower-left corner at the raster position plus
   // (i, j); it makes the fragment whose centre lies inside.
   const int x0 = int(std::ceil(raster_pos_.window.x - 0.5)), y0 = int(std::ceil(raster_pos_.window.y - 0.5));
-  const uint32_t z = raster::detail::depth24(raster_pos_.window.z);
+  const uint32_t z = raster::detail::depth24(float(raster_pos_.window.z));  // as llvmpipe converts depth
   for (GLsizei j = 0; j < h; ++j) {
     const int fy = y0 + j;
     if (fy < 0 || fy >= fb_.height) continue;

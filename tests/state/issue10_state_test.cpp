@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "harness.h"
 #include "state/context.h"
@@ -93,6 +94,69 @@ INSTANTIATE_TEST_SUITE_P(State, Issue10, ::testing::ValuesIn(std::vector<Case>{
   {"DrawPixelsBadFormat", nullptr, [] { glDrawPixels(1, 1, GL_LIGHTING, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_ENUM},
   {"DrawPixelsInsideBeginEnd", nullptr, inside([] { glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }), IO},
 }), case_name);
+
+// glRasterPos / glDrawPixels over generated cases: raster positions anywhere in (and past) the
+// window, under a random projection; each colour format with bytes or floats; random unpack
+// alignment, row length and skips; the depth test on with a random function against a drawn
+// triangle. Every byte of the picture must be Mesa's.
+std::vector<Case> draw_pixels_cases() {
+  static GLfloat floats[64 * 64 * 4];
+  static GLubyte bytes[64 * 64 * 4];
+  std::mt19937 rng(77);
+  for (GLfloat& f : floats) f = float(rng() % 1200) / 1000.0f - 0.1f;  // a few outside [0, 1]
+  for (GLubyte& b : bytes) b = GLubyte(rng());
+  const GLenum formats[] = {GL_RGBA, GL_RGB, GL_BGRA, GL_BGR, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE,
+                            GL_LUMINANCE_ALPHA};
+  const GLenum funcs[] = {GL_LESS, GL_LEQUAL, GL_GREATER, GL_GEQUAL, GL_EQUAL, GL_NOTEQUAL, GL_ALWAYS, GL_NEVER};
+  auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * float(rng() % 100000) / 100000.0f; };
+  std::vector<Case> rows;
+  for (int n = 0; n < 200; ++n) {
+    const GLenum format = formats[rng() % std::size(formats)];
+    const bool as_float = rng() % 2;
+    const GLsizei w = 1 + GLsizei(rng() % 9), h = 1 + GLsizei(rng() % 9);
+    const GLint align = GLint(1) << (rng() % 4), row_length = rng() % 3 ? 0 : w + GLint(rng() % 4);
+    const GLint skip_rows = GLint(rng() % 3), skip_pixels = GLint(rng() % 3);
+    const float x = uniform(-1.3f, 1.2f), y = uniform(-1.3f, 1.2f);
+    const bool depth = rng() % 2, ortho = rng() % 2;
+    const GLenum func = funcs[rng() % std::size(funcs)];
+    char name[160];
+    std::snprintf(name, sizeof name, "DrawPixels%d_f%04X_%s_%dx%d_a%d_r%d_s%d_%d_at%+.3f_%+.3f_%s_%s%04X", n, format,
+                  as_float ? "float" : "ubyte", w, h, align, row_length, skip_rows, skip_pixels, x, y,
+                  ortho ? "ortho" : "frustum", depth ? "depth" : "nodepth", func);
+    for (char* c = name; *c; ++c)
+      if (*c == '+' || *c == '-' || *c == '.') *c = *c == '-' ? 'm' : 'p';
+    rows.push_back({name, [=] {
+                      glPixelStorei(GL_UNPACK_ALIGNMENT, align);
+                      glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length);
+                      glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_rows);
+                      glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_pixels);
+                      glMatrixMode(GL_PROJECTION);
+                      if (ortho) glOrtho(-1.1, 0.9, -1, 1.2, -1, 1);
+                      else glFrustum(-0.5, 0.5, -0.5, 0.5, 0.5, 3), glTranslatef(0, 0, -1.5f);
+                      glMatrixMode(GL_MODELVIEW);
+                      if (depth) {
+                        glClear(GL_DEPTH_BUFFER_BIT);  // a new buffer's contents are undefined (Mesa's: 0)
+                        glEnable(GL_DEPTH_TEST);
+                        glDepthFunc(GL_ALWAYS);
+                        glBegin(GL_TRIANGLES);  // a depth ramp under the pixels
+                        glColor3f(0.2f, 0.4f, 0.6f);
+                        glVertex3f(-2, -2, -1), glVertex3f(2, -2, 0), glVertex3f(0, 2, 1);
+                        glEnd();
+                        glDepthFunc(func);
+                      }
+                      glColor4f(0.9f, 0.1f, 0.5f, 1);
+                    },
+                    [=] {
+                      glRasterPos2f(x, y);
+                      glDrawPixels(w, h, format, as_float ? GL_FLOAT : GL_UNSIGNED_BYTE,
+                                   as_float ? static_cast<const void*>(floats) : static_cast<const void*>(bytes));
+                      observe_picture("picture");
+                    },
+                    OK});
+  }
+  return rows;
+}
+INSTANTIATE_TEST_SUITE_P(Generated, Issue10, ::testing::ValuesIn(draw_pixels_cases()), case_name);
 
 // Item 10: a draw that cannot fit in memory is GL_OUT_OF_MEMORY, not an abort (Mesa would read
 // past the arrays; there is nothing of it to compare).
