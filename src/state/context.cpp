@@ -411,6 +411,7 @@ void Context::flush_stored() {
   if (spec_) return;
   copy_pending();
   pending_materials_.clear();
+  color_size_ = color_active_ = 0;  // the vbo's vertex format is reset
 }
 
 void Context::ShadeModel(GLenum mode) {
@@ -514,7 +515,11 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
     n = 16, normalized = kFromFloat;
   };
-  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL) flush_stored();  // as glGetMaterialfv
+  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL) {  // as glGetMaterialfv, but the colour
+    const int size = color_size_, active = color_active_;           // attribute keeps its sizes (measured)
+    flush_stored();
+    color_size_ = size, color_active_ = active;
+  }
   switch (pname) {
     // The float context reports its float matrices, as Mesa does: the ones it draws with.
     case GL_MODELVIEW_MATRIX: mat(modelview()); break;
@@ -831,7 +836,17 @@ void Context::prepare_lighting() {
 
 void Context::Normal(double x, double y, double z) { normal_ = {x, y, z}; }
 
-void Context::Color(double r, double g, double b, double a) {
+void Context::Color(double r, double g, double b, double a, int components) {
+  // glColor3 sets alpha to 1 (GL 2.1 section 2.7). Mesa's vbo keeps the colour attribute's size and
+  // active size between flushes: a glColor3 that shrinks the active size fills alpha with 1, but
+  // one at active size 3 in an attribute of size 4 (glColor4, glColor3, glColor4 since the last
+  // flush) leaves alpha as the last glColor4 set it. Measured call by call; tested on generated
+  // streams (ColorMaterialStreams).
+  if (!spec_) {
+    if (components > color_size_) color_size_ = color_active_ = components;
+    else if (components < color_active_) color_active_ = components;
+    else if (components == 3) a = color_.a;
+  }
   color_ = {r, g, b, a};
   if (in_begin_ && !color_varies_) color_varies_ = true, constants_dirty_ = true;
   if (!spec_) return;  // tracked at the next flush (see update_color_material)
@@ -1041,7 +1056,7 @@ void Context::fetch_vertex(GLint i) {
     const uint8_t* p = element(color_array_, i);
     const GLenum t = color_array_.type;
     Color(read_component(p, t, 0, true), read_component(p, t, 1, true), read_component(p, t, 2, true),
-          color_array_.size == 4 ? read_component(p, t, 3, true) : 1.0);
+          color_array_.size == 4 ? read_component(p, t, 3, true) : 1.0, color_array_.size);
   }
   if (vertex_array_.enabled) {
     const uint8_t* p = element(vertex_array_, i);

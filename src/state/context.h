@@ -115,7 +115,7 @@ class Context {
   void End();
   void Vertex(double x, double y, double z, double w);
   void Normal(double x, double y, double z);
-  void Color(double r, double g, double b, double a);
+  void Color(double r, double g, double b, double a, int components = 4);  // glColor3*: 3
   void VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p);
   void NormalPointer(GLenum type, GLsizei stride, const void* p);
   void ColorPointer(GLint size, GLenum type, GLsizei stride, const void* p);
@@ -233,6 +233,7 @@ class Context {
   glm::dvec4 color_{1, 1, 1, 1};
   glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
   bool color_varies_ = false;             // this draw's colour comes per vertex
+  int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
   // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
@@ -241,7 +242,10 @@ class Context {
     glm::dvec4 color;
   };
   CurrentValues current_values() const { return {normal_, color_}; }
-  void restore(const CurrentValues& v) { normal_ = v.normal, color_ = v.color; }
+  void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
+    normal_ = v.normal, color_ = v.color;
+    color_size_ = color_active_ = 0;
+  }
   struct PendingMaterial {
     glm::dvec4* dst;
     glm::dvec4 value;

@@ -21,9 +21,9 @@ void APIENTRY Begin(GLenum m) { FWD(Begin(m)); }
 void APIENTRY Clear(GLbitfield m) { FWD(Clear(m)); }
 void APIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { FWD(ClearColor(r, g, b, a)); }
 void APIENTRY ClearDepth(GLclampd d) { FWD(ClearDepth(d)); }
-void APIENTRY Color3f(GLfloat r, GLfloat g, GLfloat b) { FWD(Color(r, g, b, 1)); }
-void APIENTRY Color3fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], 1)); }
-void APIENTRY Color3ub(GLubyte r, GLubyte g, GLubyte b) { FWD(Color(r / 255.0, g / 255.0, b / 255.0, 1)); }
+void APIENTRY Color3f(GLfloat r, GLfloat g, GLfloat b) { FWD(Color(r, g, b, 1, 3)); }
+void APIENTRY Color3fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], 1, 3)); }
+void APIENTRY Color3ub(GLubyte r, GLubyte g, GLubyte b) { FWD(Color(r / 255.0, g / 255.0, b / 255.0, 1, 3)); }
 void APIENTRY Color4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { FWD(Color(r, g, b, a)); }
 void APIENTRY Color4fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], v[3])); }
 void APIENTRY ColorMaterial(GLenum f, GLenum m) { FWD(ColorMaterial(f, m)); }
