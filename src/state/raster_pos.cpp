@@ -8,6 +8,7 @@
 // the integer and packed types) are not: the call records GL_INVALID_OPERATION and says so once
 // on stderr; it never draws something else in their place.
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <set>
@@ -27,11 +28,22 @@ void Context::RasterPos(double x, double y, double z, double w) {
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());
   bool zero_normal = false;
   const raster::Vertex v = vertex({x, y, z, w}, normal_, color_, &zero_normal);
-  raster_pos_.valid = raster::outside_planes(v.clip) == 0;  // a point: clipped away or not at all
+  const glm::dvec4& c = v.clip;
+  // Clipped as a point against the six planes only, as Mesa does: a NaN coordinate compares false
+  // and leaves the position valid (all NaN), w = 0 at the origin is valid, and an invalid position
+  // keeps the last valid one (measured; GL 2.1 leaves both undefined).
+  raster_pos_.valid = !(c.x > c.w || c.x < -c.w || c.y > c.w || c.y < -c.w || c.z > c.w || c.z < -c.w);
   if (!raster_pos_.valid) return;
-  const raster::WindowVertex wv = raster::map_to_window(v.clip, raster_state());
-  raster_pos_.window = glm::dvec4(wv.pos, v.clip.w);
-  raster_pos_.color = v.front;
+  if (std::isnan(c.x) || std::isnan(c.y) || std::isnan(c.z) || std::isnan(c.w)) {
+    raster_pos_.window = glm::dvec4(std::numeric_limits<double>::quiet_NaN());
+  } else {
+    const double inv = c.w != 0 ? 1 / c.w : 1;  // Mesa: no divide by a zero w
+    const glm::ivec4 vp = viewport_;
+    raster_pos_.window = {float((c.x * inv + 1) * 0.5 * vp[2] + vp[0]), float((c.y * inv + 1) * 0.5 * vp[3] + vp[1]),
+                          float((c.z * inv * (depth_range_.y - depth_range_.x) + (depth_range_.y + depth_range_.x)) * 0.5),
+                          c.w};
+  }
+  raster_pos_.color = lighting_ ? v.front : color_;  // unlit: the current colour, unclamped (Mesa)
   const glm::dvec4 eye = to_eye(glm::value_ptr(glm::dvec4(x, y, z, w)), w);
   raster_pos_.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
 }
@@ -92,7 +104,9 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
                            "(GL_INVALID_OPERATION)\n", format, type);
     return error(GL_INVALID_OPERATION);
   }
+  const glm::dvec4& rp = raster_pos_.window;
   if (!raster_pos_.valid || render_mode_ != GL_RENDER || !pixels) return;  // no fragments
+  if (!(std::abs(rp.x) < 1e9 && std::abs(rp.y) < 1e9)) return;            // NaN or far away: none we can place
   flush_clear();
   // Unpacking (GL 2.1 section 3.6.4): rows of GL_UNPACK_ROW_LENGTH pixels (w when 0), each
   // starting at a multiple of GL_UNPACK_ALIGNMENT, after the skipped rows and pixels.

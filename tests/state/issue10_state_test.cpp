@@ -90,6 +90,14 @@ INSTANTIATE_TEST_SUITE_P(State, Issue10, ::testing::ValuesIn(std::vector<Case>{
      glDrawPixels(5, 3, GL_RGBA, GL_UNSIGNED_BYTE, kImage);
      observe_picture("picture");
    }, OK},
+  // The raster position's own state in Mesa's corners: NaN, w = 0, w < 0, outside, colours
+  // outside [0, 1], lit.
+  {"RasterPosNaN", nullptr, [] { glRasterPos2f(std::nanf(""), 0); }, OK},
+  {"RasterPosInfinity", nullptr, [] { glRasterPos2f(INFINITY, 0); }, OK},
+  {"RasterPosOutsideKeepsTheLast", [] { glRasterPos2f(0.5f, 0.25f); }, [] { glRasterPos2f(2, 0); }, OK},
+  {"RasterPosColourUnclamped", [] { glColor4f(std::nanf(""), 0.4f, 2, -1); }, [] { glRasterPos2f(0, 0); }, OK},
+  {"RasterPosLit", [] { glEnable(GL_LIGHTING); glEnable(GL_LIGHT0); glTranslatef(0.1f, 0.2f, 0.3f); },
+   [] { glRasterPos2f(0.25f, -0.5f); }, OK},
   {"DrawPixelsNegativeSize", nullptr, [] { glDrawPixels(-1, 3, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_VALUE},
   {"DrawPixelsBadFormat", nullptr, [] { glDrawPixels(1, 1, GL_LIGHTING, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_ENUM},
   {"DrawPixelsInsideBeginEnd", nullptr, inside([] { glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }), IO},
