@@ -28,7 +28,9 @@ struct Framebuffer {
   int width = 0, height = 0;
   std::vector<uint8_t> color;   // RGBA8
   std::vector<uint32_t> depth;  // 24-bit
-  Framebuffer(int w, int h) : width(w), height(h), color(size_t(w) * h * 4, 0), depth(size_t(w) * h, 0xFFFFFF) {}
+  // A new buffer's contents are undefined in GL; llvmpipe's start at 0, colour and depth alike, and
+  // so do ours (a program that depth-tests without clearing then draws what it draws on Mesa).
+  Framebuffer(int w, int h) : width(w), height(h), color(size_t(w) * h * 4, 0), depth(size_t(w) * h, 0) {}
 };
 
 struct State {

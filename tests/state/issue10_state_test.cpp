@@ -98,6 +98,19 @@ INSTANTIATE_TEST_SUITE_P(State, Issue10, ::testing::ValuesIn(std::vector<Case>{
   {"RasterPosColourUnclamped", [] { glColor4f(std::nanf(""), 0.4f, 2, -1); }, [] { glRasterPos2f(0, 0); }, OK},
   {"RasterPosLit", [] { glEnable(GL_LIGHTING); glEnable(GL_LIGHT0); glTranslatef(0.1f, 0.2f, 0.3f); },
    [] { glRasterPos2f(0.25f, -0.5f); }, OK},
+  // A new framebuffer's contents (undefined in GL): llvmpipe's depth starts at 0, so a depth-tested
+  // draw before any glClear draws nothing.
+  {"NewDepthBufferReadBack", nullptr, [] {
+     GLuint d[kWidth * kHeight];
+     glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, d);
+     for (int i = 0; i < kWidth * kHeight; i += 17) observe("depth[" + std::to_string(i) + "]", d[i]);
+   }, OK},
+  {"DepthTestBeforeAnyClear", [] { glEnable(GL_DEPTH_TEST); }, [] {
+     glBegin(GL_TRIANGLES);
+     glVertex3f(-1, -1, 0), glVertex3f(1, -1, 0), glVertex3f(0, 1, 0);
+     glEnd();
+     observe_picture("picture");
+   }, OK},
   {"DrawPixelsNegativeSize", nullptr, [] { glDrawPixels(-1, 3, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_VALUE},
   {"DrawPixelsBadFormat", nullptr, [] { glDrawPixels(1, 1, GL_LIGHTING, GL_UNSIGNED_BYTE, kImage); }, GL_INVALID_ENUM},
   {"DrawPixelsInsideBeginEnd", nullptr, inside([] { glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, kImage); }), IO},
