@@ -23,16 +23,29 @@ inline size_t type_size(GLenum t) {
   }
 }
 
-// Reads component k of an array element; `normalized` maps integers to [-1,1] or [0,1] as GL 2.1
-// does for normals and colours: signed (2c+1)/(2^b-1), unsigned c/(2^b-1).
-inline double read_component(const uint8_t* p, GLenum type, int k, bool normalized) {
+template <typename T>
+double signed_to_unit(T c, Fixed f) {
+  constexpr double max = double(T(~0u >> (32 - 8 * sizeof(T) + 1)));  // 2^(b-1) - 1
+  switch (f) {
+    case Fixed::Raw: return c;
+    case Fixed::Gl42: return std::max(c / max, -1.0);
+    case Fixed::MesaCall:
+      if (sizeof(T) == 4) return float((2.0f * float(c) + 1.0f) * (1.0f / 4294967294.0));  // INT_TO_FLOAT
+      return (2.0f * float(c) + 1.0f) * (1.0f / float(2 * max + 1));
+    default: return (2.0 * c + 1) / (2 * max + 1);
+  }
+}
+
+// Component k of an array element, in double.
+inline double read_component(const uint8_t* p, GLenum type, int k, Fixed f) {
+  const bool unit = f != Fixed::Raw;
   switch (type) {
-    case GL_BYTE: { int8_t v; std::memcpy(&v, p + k, 1); return normalized ? (2.0 * v + 1) / 255.0 : v; }
-    case GL_UNSIGNED_BYTE: { uint8_t v = p[k]; return normalized ? v / 255.0 : v; }
-    case GL_SHORT: { int16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? (2.0 * v + 1) / 65535.0 : v; }
-    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * k, 2); return normalized ? v / 65535.0 : v; }
-    case GL_INT: { int32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? (2.0 * v + 1) / 4294967295.0 : v; }
-    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * k, 4); return normalized ? v / 4294967295.0 : v; }
+    case GL_BYTE: { int8_t v; std::memcpy(&v, p + k, 1); return signed_to_unit(v, f); }
+    case GL_UNSIGNED_BYTE: { uint8_t v = p[k]; return unit ? v / 255.0 : v; }
+    case GL_SHORT: { int16_t v; std::memcpy(&v, p + 2 * k, 2); return signed_to_unit(v, f); }
+    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p + 2 * k, 2); return unit ? v / 65535.0 : v; }
+    case GL_INT: { int32_t v; std::memcpy(&v, p + 4 * k, 4); return signed_to_unit(v, f); }
+    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p + 4 * k, 4); return unit ? v / 4294967295.0 : v; }
     case GL_FLOAT: { float v; std::memcpy(&v, p + 4 * k, 4); return v; }
     case GL_DOUBLE: { double v; std::memcpy(&v, p + 8 * k, 8); return v; }
     default: return 0;

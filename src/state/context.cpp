@@ -872,6 +872,10 @@ void Context::update_vertex_constants() {
       cols *= glm::length(m3[i]), rows *= glm::length(glm::dvec3(m3[0][i], m3[1][i], m3[2][i]));
     const bool singular = !(std::abs(glm::determinant(m3)) > 1e-14 * std::min(rows, cols));
     normal_matrix_ = singular ? glm::dmat3(1) : glm::inverse(m3);
+    // A projective modelview (bottom row not 0, 0, 0, 1): Mesa transforms normals by the upper 3x3
+    // of the 4x4 inverse, where GL 2.1 inverts the upper 3x3 (the two agree for every affine matrix).
+    if (!spec_ && (mv[0][3] != 0 || mv[1][3] != 0 || mv[2][3] != 0 || mv[3][3] != 1))
+      normal_matrix_ = glm::dmat3(glm::inverse(mv));
     for (int k = 0; k < 9; ++k)
       if (!std::isfinite(normal_matrix_[k / 3][k % 3])) normal_matrix_ = glm::dmat3(1);
   }
@@ -889,6 +893,9 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
     eye = modelview_.back() * obj;
     v.clip = projection_.back() * eye;
   }
+  // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
+  // takes x, y, z as they are (docs/deviations.md). The lighting divides unless w is 1.
+  if (!spec_) eye.w = 1;
   if (!lighting_) {
     // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
     for (int k = 0; k < 4; ++k) v.front[k] = !(color[k] < 1) ? 1.0 : color[k] > 0 ? color[k] : 0.0;
@@ -940,18 +947,18 @@ void Context::process_vertex(const glm::dvec4& obj) {
 void Context::fetch_range(GLint first, GLint count) {
   update_vertex_constants();
   verts_.resize(size_t(count));
-  auto attribute = [](const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
+  auto attribute = [](const ClientArray& a, GLint i, int n, Fixed normalized, glm::dvec4 v) {
     const uint8_t* p = element(a, i);
     for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
     return v;
   };
   auto work = [&](GLint lo, GLint hi, bool* zero) {
     for (GLint i = lo; i < hi; ++i) {
-      const glm::dvec3 n = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, true, glm::dvec4(0)))
+      const glm::dvec3 n = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0)))
                                                  : normal_;
-      const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
+      const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1))
                                                 : color_;
-      verts_[size_t(i - first)] = vertex(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)), n, c, zero);
+      verts_[size_t(i - first)] = vertex(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)), n, c, zero);
     }
   };
   raster::Workers& w = workers();
@@ -1046,22 +1053,22 @@ void Context::ColorPointer(GLint size, GLenum type, GLsizei stride, const void* 
   color_array_ = {color_array_.enabled, size, type, stride, p};
 }
 
-void Context::fetch_vertex(GLint i) {
+void Context::fetch_vertex(GLint i, Fixed f) {
   if (normal_array_.enabled) {
     const uint8_t* p = element(normal_array_, i);
-    Normal(read_component(p, normal_array_.type, 0, true), read_component(p, normal_array_.type, 1, true),
-           read_component(p, normal_array_.type, 2, true));
+    Normal(read_component(p, normal_array_.type, 0, f), read_component(p, normal_array_.type, 1, f),
+           read_component(p, normal_array_.type, 2, f));
   }
   if (color_array_.enabled) {
     const uint8_t* p = element(color_array_, i);
     const GLenum t = color_array_.type;
-    Color(read_component(p, t, 0, true), read_component(p, t, 1, true), read_component(p, t, 2, true),
-          color_array_.size == 4 ? read_component(p, t, 3, true) : 1.0, color_array_.size);
+    Color(read_component(p, t, 0, f), read_component(p, t, 1, f), read_component(p, t, 2, f),
+          color_array_.size == 4 ? read_component(p, t, 3, f) : 1.0, color_array_.size);
   }
   if (vertex_array_.enabled) {
     const uint8_t* p = element(vertex_array_, i);
     glm::dvec4 v(0, 0, 0, 1);
-    for (int k = 0; k < vertex_array_.size; ++k) v[k] = read_component(p, vertex_array_.type, k, false);
+    for (int k = 0; k < vertex_array_.size; ++k) v[k] = read_component(p, vertex_array_.type, k, Fixed::Raw);
     process_vertex(v);
   }
 }
@@ -1084,11 +1091,11 @@ void Context::ArrayElement(GLint i) {
     // no effect), as in Mesa.
     const bool vertex = vertex_array_.enabled;
     vertex_array_.enabled = false;
-    fetch_vertex(i);
+    fetch_vertex(i, element_fixed());
     vertex_array_.enabled = vertex;
     return;
   }
-  fetch_vertex(i);
+  fetch_vertex(i, element_fixed());
 }
 
 // A draw from arrays: pending values copied first (Mesa's FLUSH_FOR_DRAW); the colour varies
@@ -1138,7 +1145,7 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   if (count >= kParallelVertices && threads_ > 1)
     fetch_range(first, count);
   else
-    for (GLint i = first; i < first + count; ++i) fetch_vertex(i);
+    for (GLint i = first; i < first + count; ++i) fetch_vertex(i, draw_fixed());
   restore(kept);
   flush_primitive();
 }
@@ -1168,7 +1175,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     }
   }
   elements_.resize(size_t(count));
-  for (GLsizei i = 0; i < count; ++i) elements_[i] = uint32_t(read_component(p, type, i, false));
+  for (GLsizei i = 0; i < count; ++i) elements_[i] = uint32_t(read_component(p, type, i, Fixed::Raw));
   if (count > 0) index_range(elements_.data(), elements_.size(), lo, hi);
   if (count > 0 && !fits_in_memory(uint64_t(hi - lo) + 1)) return elements_.clear();
   if (count > 0 && shaded_path(mode)) {
@@ -1183,7 +1190,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
     if (hi - lo + 1 >= kParallelVertices && threads_ > 1)
       fetch_range(GLint(lo), GLint(hi - lo + 1));
     else
-      for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i));
+      for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i), draw_fixed());
     restore(kept);
     for (uint32_t& e : elements_) e -= lo;
   }

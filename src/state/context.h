@@ -26,6 +26,14 @@ enum class Precision { Float, Double };
 
 inline constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
 
+// How integer normals and colours map to [-1, 1] or [0, 1] (unsigned: c / (2^b - 1) in every rule).
+//   Raw:      not at all (positions, indices);
+//   Gl21:     signed (2c + 1) / (2^b - 1), GL 2.1's table 2.9;
+//   Gl42:     signed max(c / (2^(b-1) - 1), -1), GL 4.2's rule, which Mesa 22.3's draws use;
+//   MesaCall: GL 2.1's rule in float as Mesa's glNormal3b / glColor4s ... compute it (BYTE_TO_FLOAT
+//             and friends in macros.h), which its glArrayElement goes through.
+enum class Fixed : unsigned char { Raw, Gl21, Gl42, MesaCall };
+
 struct ClientArray {
   bool enabled = false;
   GLint size = 4;
@@ -161,7 +169,10 @@ class Context {
   std::vector<glm::mat4>& stack_f();
   void set_light(int i, GLenum pname, const double* v);
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
-  void fetch_vertex(GLint i);  // from the enabled client arrays, as glArrayElement
+  void fetch_vertex(GLint i, Fixed f);  // from the enabled client arrays, as glArrayElement
+  // Integer normals and colours: as Mesa's draws and its glArrayElement convert them, or GL 2.1's rule.
+  Fixed draw_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::Gl42; }
+  Fixed element_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::MesaCall; }
   void process_vertex(const glm::dvec4& obj);
   void undefer();  // immediate-mode vertices kept for glEnd: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()

@@ -37,11 +37,13 @@ void Context::RasterPos(double x, double y, double z, double w) {
   if (std::isnan(c.x) || std::isnan(c.y) || std::isnan(c.z) || std::isnan(c.w)) {
     raster_pos_.window = glm::dvec4(std::numeric_limits<double>::quiet_NaN());
   } else {
-    const double inv = c.w != 0 ? 1 / c.w : 1;  // Mesa: no divide by a zero w
+    // In float, as the viewport transform's scale and translate (Mesa: no divide by a zero w).
+    const float inv = c.w != 0 ? 1.0f / float(c.w) : 1.0f;
     const glm::ivec4 vp = viewport_;
-    raster_pos_.window = {float((c.x * inv + 1) * 0.5 * vp[2] + vp[0]), float((c.y * inv + 1) * 0.5 * vp[3] + vp[1]),
-                          float((c.z * inv * (depth_range_.y - depth_range_.x) + (depth_range_.y + depth_range_.x)) * 0.5),
-                          c.w};
+    const float sx = float(vp[2]) * 0.5f, sy = float(vp[3]) * 0.5f;
+    const float sz = float((depth_range_.y - depth_range_.x) * 0.5), tz = float((depth_range_.y + depth_range_.x) * 0.5);
+    raster_pos_.window = {float(c.x) * inv * sx + (float(vp[0]) + sx), float(c.y) * inv * sy + (float(vp[1]) + sy),
+                          float(c.z) * inv * sz + tz, c.w};
   }
   raster_pos_.color = lighting_ ? v.front : color_;  // unlit: the current colour, unclamped (Mesa)
   const glm::dvec4 eye = to_eye(glm::value_ptr(glm::dvec4(x, y, z, w)), w);

@@ -44,7 +44,7 @@ glm::dvec4 direct(const uint8_t* p, int n, glm::dvec4 v) {
 
 // Components [0, n) of element i, the others from `v`; float and double arrays (immediate mode's
 // kept vertices among them) read directly.
-inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, bool normalized, glm::dvec4 v) {
+inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, Fixed normalized, glm::dvec4 v) {
   const uint8_t* p = element(a, i);
   if (a.type == GL_FLOAT) return direct<float>(p, n, v);
   if (a.type == GL_DOUBLE) return direct<double>(p, n, v);
@@ -154,10 +154,10 @@ void Context::shade_range(GLint first, GLint count) {
       for (int j = 0; j < m; ++j) {
         const GLint i = b + j;
         // Positions rounded as Mesa rounds them (float_matrix.h).
-        const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, false, glm::dvec4(0, 0, 0, 1)));
+        const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
         const size_t o = size_t(i - first);
         out.clip[o] = fmat::transform(mvp_f_, obj);
-        const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, true, glm::dvec4(1))
+        const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1))
                                                   : color_;
         if (!lighting_) {
           // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa.
@@ -166,8 +166,9 @@ void Context::shade_range(GLint first, GLint count) {
           continue;
         }
         eye[j] = fmat::transform(modelview, obj);
+        if (!spec_) eye[j].w = 1;  // Mesa lights at x, y, z (Context::vertex)
         color[j] = glm::vec4(c);
-        raw[j] = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, true, glm::dvec4(0))) : normal_;
+        raw[j] = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0))) : normal_;
       }
       if (lighting_) eye_normals(raw, m, inv, normalize_, rescale_normal_ ? rescale : 0.0, normal, zero_normal);
       raster::map_shaded(out, size_t(b - first), size_t(m), rs);

@@ -661,12 +661,11 @@ std::vector<Case> build() {
     };
     c.note = "Vertices (x, y, z, 1) * 1e-30 with w = 1e-30: the same projective points as the sphere, and "
              "clipping and the perspective divide make the same picture. For lighting, 2.14.1 takes VP "
-             "between homogeneous points, that is between the positions divided by w: ours lights the "
-             "sphere as with w = 1. Mesa's fixed-function program (ffvertex_prog.c: SUB VPpli, Ppli, V; "
-             "DP3) subtracts the eye-space x, y, z without dividing by w, so it lights every vertex as if "
-             "it sat at the eye (1e-30 from the origin).";
-    c.mesa = MesaExpectation::Deviation;
-    c.mesa_reason = "Mesa lights a vertex at its eye-space x, y, z without dividing by w";
+             "between homogeneous points, that is between the positions divided by w (soft-spec lights "
+             "the sphere as with w = 1). Mesa's fixed-function program (ffvertex_prog.c: SUB VPpli, Ppli, "
+             "V; DP3) subtracts the eye-space x, y, z without dividing by w, so it lights every vertex as "
+             "if it sat at the eye (1e-30 from the origin); ours by default too (docs/deviations.md).";
+    c.mesa = MesaExpectation::Agree;
     add(c);
   }
   {
@@ -752,10 +751,8 @@ std::vector<Case> build() {
              "the portion of the primitive that lies in the region of w_c > 0 need be produced by "
              "clipping'; ours and Mesa produce the same clipped polygons (Mesa's feedback reports each as a "
              "fan of triangles). The lighting of a vertex with w != 1 divides by w (2.14.1); Mesa does not "
-             "(see vertex_w_tiny), so the negative-w vertex's colour, and the colours clipping "
-             "interpolates from it, differ.";
-    c.mesa = MesaExpectation::Deviation;
-    c.mesa_reason = "Mesa lights a vertex at its eye-space x, y, z without dividing by w";
+             "(see vertex_w_tiny), nor does ours by default.";
+    c.mesa = MesaExpectation::Agree;
     add(c);
   }
 
@@ -1158,12 +1155,11 @@ std::vector<Case> build() {
       c.name = "normals_byte" + s;
       c.draw = integer_normals<int8_t>(GL_BYTE, normalize);
       c.note = "GL_BYTE normals, scaled to +-127, every 7th one (-128, -128, -128). GL 2.1 table 2.9 "
-               "converts a signed byte c to (2c + 1)/255 (so 0 is 1/255, 64 is 0.50588, -128 is -1), as "
-               "ours does. Mesa 22.3 fetches them as a signed-normalized format, max(c/127, -1) (the "
-               "GL 4.2 rule: 0 is 0, 64 is 0.50394), a difference of up to 1/255 per component. GL_SHORT "
-               "and GL_INT differ the same way, by 1/65535 and 1/2^32: below the 1e-4 tolerance.";
-      c.mesa = MesaExpectation::Deviation;
-      c.mesa_reason = "Mesa converts GL_BYTE normals as max(c/127, -1), not GL 2.1's (2c + 1)/255";
+               "converts a signed byte c to (2c + 1)/255 (so 0 is 1/255, 64 is 0.50588, -128 is -1). Mesa "
+               "22.3's draws fetch them as a signed-normalized format, max(c/127, -1) (the GL 4.2 rule: 0 "
+               "is 0, 64 is 0.50394), and so do ours by default (soft-spec keeps GL 2.1's rule): "
+               "docs/deviations.md.";
+      c.mesa = MesaExpectation::Agree;
       add(c);
     }
     {
