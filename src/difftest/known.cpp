@@ -67,6 +67,28 @@ const std::vector<KnownDeviation>& known_deviations() {
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
          return any_call(s, m.call, [](const Call& c, size_t) { return is(c, "glArrayElement") && c.args[0].num < 0; });
        }},
+      {"soft-null-array-pointer",
+       "an enabled array that was never given a pointer: Mesa reads address 0 (garbage or a crash), soft reads nothing and records GL_INVALID_OPERATION",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         if (m.call < 0 || size_t(m.call) >= soft.errors.size() || soft.errors[size_t(m.call)] != GL_INVALID_OPERATION)
+           return false;
+         const std::string& n = name_of(s[size_t(m.call)]);
+         if (n != "glDrawArrays" && n != "glDrawElements" && n != "glArrayElement") return false;
+         const std::pair<GLenum, const char*> arrays[] = {
+             {GL_VERTEX_ARRAY, "glVertexPointer"}, {GL_NORMAL_ARRAY, "glNormalPointer"}, {GL_COLOR_ARRAY, "glColorPointer"}};
+         for (const auto& [array, pointer] : arrays) {
+           const bool enabled = any_call(s, m.call, [&](const Call& c, size_t) {
+             return (is(c, "glEnableClientState") || is(c, "glEnable")) && GLenum(c.args[0].num) == array;
+           });
+           // Given: a pointer call soft took (no error) with a non-null pointer.
+           const bool given = any_call(s, m.call, [&](const Call& c, size_t i) {
+             return is(c, pointer) && i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR &&
+                    c.args.back().kind != Arg::Kind::Null;
+           });
+           if (enabled && !given) return true;
+         }
+         return false;
+       }},
       {"current-undefined-after-draw",
        "GL 2.1 section 2.8: with the normal or colour array enabled, the current normal or colour is indeterminate after glDrawArrays / glDrawElements",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
