@@ -84,6 +84,7 @@ const Names& names() {
         N(GL_MAP2_INDEX), N(GL_MAP2_NORMAL), N(GL_MAP2_TEXTURE_COORD_1), N(GL_MAP2_TEXTURE_COORD_2),
         N(GL_MAP2_TEXTURE_COORD_3), N(GL_MAP2_TEXTURE_COORD_4), N(GL_MAP2_VERTEX_4), N(GL_SAMPLE_ALPHA_TO_ONE),
         N(GL_TEXTURE_GEN_R), N(GL_TEXTURE_GEN_Q),
+        N(GL_FOG_HINT), N(GL_FOG_COORD_SRC), N(GL_FOG_INDEX),
     };
 #undef N
     for (const auto& [name, value] : list) {

@@ -39,12 +39,14 @@ const Vertex& flat_source(const Vertex& v, const State& s, const Vertex* provoki
 struct ClipVertex {
   glm::dvec4 clip;
   glm::dvec4 c[4];  // front, back, front_sec, back_sec
+  double fog;
 };
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
   ClipVertex r;
   r.clip = a.clip + (b.clip - a.clip) * t;
   for (int k = 0; k < 4; ++k) r.c[k] = a.c[k] + (b.c[k] - a.c[k]) * t;
+  r.fog = a.fog + (b.fog - a.fog) * t;
   return r;
 }
 
@@ -148,7 +150,7 @@ WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, con
   ClipPolygon cv;
   for (size_t i = 0; i < count; ++i) {
     const Vertex& v = flat_source(prim[i], s, provoking);  // flat: every vertex carries the provoking one's colours
-    cv.push_back({prim[i].clip, {v.front, v.back, v.front_sec, v.back_sec}});
+    cv.push_back({prim[i].clip, {v.front, v.back, v.front_sec, v.back_sec}, prim[i].fog});
   }
   // Facing is decided before clipping, from the whole primitive, in window orientation.
   bool back = false;
@@ -166,6 +168,7 @@ WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, con
     const bool use_back = back && s.two_side;
     w.color = use_back ? v.c[1] : v.c[0];
     w.sec = use_back ? v.c[3] : v.c[2];
+    w.fog = v.fog;
     out.push_back(w);
   }
   return out;
@@ -214,6 +217,19 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
   const float yd[3] = {v[0]->w->y_down, v[1]->w->y_down, v[2]->w->y_down};
   const float z[3] = {float(pos[0].z), float(pos[1].z), float(pos[2].z)};
   detail::depth_plane(x, yd, z, swapped, t.z);
+  if (s.fragment_ops()) {
+    t.offset = s.offset_fill ? detail::polygon_offset(x, yd, z, swapped, s) : 0.0f;
+    if (s.fog) {
+      // The fog coordinate is a perspective-correct varying like the colours, whatever the shade
+      // model (flat shading applies to colours only, GL 2.1 section 2.14.7).
+      double p[3];
+      const detail::PlaneSolver make(pos);
+      make(v[0]->w->fog * inv_w[0], v[1]->w->fog * inv_w[1], v[2]->w->fog * inv_w[2], p);
+      for (int i = 0; i < 3; ++i) t.fog[i] = float(p[i]);
+      make(inv_w[0], inv_w[1], inv_w[2], p);
+      for (int i = 0; i < 3; ++i) t.fog_w[i] = float(p[i]);
+    }
+  }
   return detail::setup_planes(t, pos, inv_w, color, sec, s.flat, s.add_secondary);
 }
 
@@ -232,11 +248,34 @@ void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, 
         Triangle c = t;  // clip the box to the framebuffer
         c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
         c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
-        if (c.xmin <= c.xmax && c.ymin <= c.ymax) detail::rasterize(fb, c, s, mine, [] { return true; });
+        if (c.xmin > c.xmax || c.ymin > c.ymax) continue;
+        // Fog and polygon offset are per-fragment operations only the scalar loop has.
+        if (s.fragment_ops()) detail::rasterize_fragment_ops(fb, c, s, mine);
+        else detail::rasterize(fb, c, s, mine, [] { return true; });
       }
   };
   if (bands == 1) return work(0);
   workers.run(work);
+}
+
+// Fog as Mesa 22.3's fixed-function fragment program applies it, with the parameters of
+// prog_statevars.c STATE_FOG_PARAMS_OPTIMIZED: factor f from the fragment's fog coordinate c,
+// linear c * (-1 / (end - start)) + end / (end - start), exp 2^-(c * density / ln 2), exp2
+// 2^-((c * density / sqrt(ln 2))^2), clamped to [0, 1]; then rgb = fog colour * (1 - f) + rgb * f,
+// alpha untouched (GL 2.1 section 3.10).
+glm::dvec4 apply_fog(const glm::dvec4& c, float fog_coord, const State& s) {
+  const float* p = s.fog_params;
+  float f;
+  if (s.fog_mode == GL_LINEAR) f = fog_coord * p[0] + p[1];
+  else if (s.fog_mode == GL_EXP) f = std::exp2(-(fog_coord * p[2]));
+  else {
+    const float t = fog_coord * p[3];
+    f = std::exp2(-(t * t));
+  }
+  f = f > 0 ? (f < 1 ? f : 1.0f) : 0.0f;  // saturate; a NaN to 0
+  glm::dvec4 out = c;
+  for (int k = 0; k < 3; ++k) out[k] = s.fog_color[k] * (1.0f - f) + float(c[k]) * f;
+  return out;
 }
 
 namespace {
@@ -271,7 +310,7 @@ void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s) {
   } else {
     x0 = ((sx + 128) >> 8) - width / 2, y0 = ((sy + 128) >> 8) - width / 2;
   }
-  const glm::dvec4 col = summed(v.color, v.sec, s);
+  const glm::dvec4 col = s.fog ? apply_fog(summed(v.color, v.sec, s), float(v.fog), s) : summed(v.color, v.sec, s);
   for (int64_t yd = std::max<int64_t>(y0, 0); yd < std::min<int64_t>(y0 + width, fb.height); ++yd)
     for (int64_t x = std::max<int64_t>(x0, 0); x < std::min<int64_t>(x0 + width, fb.width); ++x)
       write_fragment(fb, int(x), fb.height - 1 - int(yd), v.pos.z, col, s);
@@ -389,6 +428,7 @@ void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, co
   };
   const float w1 = float(a.inv_w), w2 = float(b.inv_w);
   const Plane zp = plane(float(a.pos.z), float(b.pos.z)), wp = plane(w1, w2);
+  const Plane fp = plane(float(a.fog) * w1, float(b.fog) * w2);  // fog coordinate / w
   Plane cp[8];
   for (int k = 0; k < 4; ++k) {
     cp[k] = plane(float(a.color[k]) * w1, float(b.color[k]) * w2);
@@ -410,6 +450,7 @@ void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, co
         for (int k = 0; k < 4; ++k) c[k] = cp[k].at(X, Y) * w, sc[k] = cp[4 + k].at(X, Y) * w;
         col = summed(c, sc, s);
       }
+      if (s.fog) col = apply_fog(col, fp.at(X, Y) / wp.at(X, Y), s);
       write_fragment(fb, int(xp), fb.height - 1 - int(yd), zp.at(X, Y), col, s);
     }
 }

@@ -17,6 +17,7 @@ struct Vertex {
   glm::dvec4 clip;
   glm::dvec4 front, back;            // primary colours, clamped
   glm::dvec4 front_sec, back_sec;    // secondary (separate specular) colours
+  double fog = 0;                    // fog coordinate (state/fog.cpp), interpolated like a colour
 };
 
 // Threads share the rows out in interleaved bands of this many: a triangle across two bands is
@@ -48,6 +49,18 @@ struct State {
   bool float_window = false;
   int fb_height = 0;
   float line_width = 1, point_size = 1;  // glLineWidth, glPointSize
+  // GL_FOG: each fragment's colour blended towards fog_color by a factor from its interpolated
+  // fog coordinate (apply_fog). fog_params are Mesa's STATE_FOG_PARAMS_OPTIMIZED.
+  bool fog = false;
+  GLenum fog_mode = GL_EXP;
+  float fog_params[4] = {0, 0, 0, 0};
+  float fog_color[3] = {0, 0, 0};
+  // GL_POLYGON_OFFSET_FILL: filled triangles' depth moved by factor * max slope + units' step
+  // (setup, Triangle::offset).
+  bool offset_fill = false;
+  float offset_factor = 0, offset_units = 0;
+  // Fog or polygon offset: triangles take the scalar row loop (span.h rasterize_fragment_ops).
+  bool fragment_ops() const { return fog || offset_fill; }
 };
 
 // A vector of at most N elements kept in place: clipping makes at most nine vertices of a
@@ -87,6 +100,7 @@ struct WindowVertex {
   // Window x in float, what llvmpipe's point and line setup reads with y_down (the float path's
   // values; the double path's rounded).
   float fx = 0;
+  double fog = 0;  // the fog coordinate
 };
 
 // The float path of map_to_window: window x, y (GL rows, up), z, and the snapped position.
@@ -133,6 +147,10 @@ struct Triangle {
   // (X, row from the top) (span.h depth_plane, depth_at).
   float z[3];
   float inv_w[3], c0[4], cx[4], cy[4];  // one after another: the box kernel reads them as 15 floats
+  // Set only under State::fragment_ops(): the planes of fog coordinate / w and of 1/w (inv_w is
+  // constant when flat), and the depth offset added to every fragment's z (polygon offset).
+  float fog[3], fog_w[3];
+  float offset;
 };
 
 // False when the triangle covers no pixel centre once snapped.
@@ -170,6 +188,9 @@ void clear_band(Framebuffer& fb, const ClearRequest& c, int band);  // rows [64 
 // clamp), counted process-wide for the stress suite: reset, draw, read.
 uint64_t nonfinite_fragments();
 void reset_nonfinite_fragments();
+
+// The fragment's colour after fog (State::fog), from its interpolated fog coordinate.
+glm::dvec4 apply_fog(const glm::dvec4& c, float fog_coord, const State& s);
 
 // GL's float-to-unorm8 conversion, rounding half to even as llvmpipe does.
 uint8_t to_unorm8(double c);

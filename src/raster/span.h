@@ -78,6 +78,27 @@ inline void depth_plane(const float (&x)[3], const float (&yd)[3], const float (
   out[0] = z0 - (dzdx * x0c + dzdy * y0c), out[1] = dzdx, out[2] = dzdy;
 }
 
+// Polygon offset as llvmpipe's setup computes it (lp_state_setup.c lp_do_offset_tri), in float
+// from the same vertex order and differences as depth_plane: the depth slopes |dz/dx|, |dz/dy|
+// from the cross product of two edges over the doubled area, their maximum times the factor,
+// plus the units already scaled to the 24-bit buffer (State::offset_units). The fragment shader
+// adds it to each fragment's interpolated z before the clamp to [0, 1].
+inline float polygon_offset(const float (&x)[3], const float (&yd)[3], const float (&z)[3], bool swapped,
+                            const State& s) {
+  const int i0 = swapped ? 2 : 0, i1 = swapped ? 0 : 1, i2 = swapped ? 1 : 2;
+  const float dx01 = x[i0] - x[i1], dy01 = yd[i0] - yd[i1], dz01 = z[i0] - z[i1];
+  const float dx20 = x[i2] - x[i0], dy20 = yd[i2] - yd[i0], dz20 = z[i2] - z[i0];
+  const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
+  const float dzdx = std::fabs((dz20 * dy01 - dy20 * dz01) * ooa);
+  const float dzdy = std::fabs((dx20 * dz01 - dz20 * dx01) * ooa);
+  const float max = !(dzdx <= dzdy) ? dzdx : dzdy;  // an unordered compare: a NaN dz/dx is taken
+  return s.offset_units + max * s.offset_factor;
+}
+
+// Triangles under fog or polygon offset (State::fragment_ops): the pixels rasterize() covers,
+// one by one, each with its fog and depth offset (fragment_ops.cpp).
+void rasterize_fragment_ops(Framebuffer& fb, const Triangle& t, const State& s, const Bands& bands);
+
 // The fragment's depth at pixel column X, row Y counted from the top: two fused multiply-adds, as
 // lp_bld_interp.c's interp_attrib_linear (llvm.fmuladd, fused on a CPU with FMA).
 inline float depth_at(const float* z, int stride, float x, float y_down) {

@@ -80,6 +80,8 @@ bool* Context::capability(GLenum cap) {
     case GL_COLOR_MATERIAL: return &color_material_;
     case GL_DEPTH_TEST: return &depth_test_;
     case GL_CULL_FACE: return &cull_face_;
+    case GL_FOG: return &fog_;
+    case GL_POLYGON_OFFSET_FILL: return &offset_fill_;
     default: {
       const int i = light_index(cap);
       return i >= 0 ? &lights_[i].enabled : nullptr;
@@ -101,14 +103,14 @@ constexpr OtherEnable kOtherCaps[] = {
     {GL_ALPHA_TEST, false}, {GL_AUTO_NORMAL, false}, {GL_BLEND, false}, {GL_CLIP_PLANE0, false},
     {GL_CLIP_PLANE1, false}, {GL_CLIP_PLANE2, false}, {GL_CLIP_PLANE3, false}, {GL_CLIP_PLANE4, false},
     {GL_CLIP_PLANE5, false}, {GL_CLIP_PLANE0 + 6, false}, {GL_CLIP_PLANE0 + 7, false}, {GL_COLOR_LOGIC_OP, false},
-    {GL_COLOR_SUM, false}, {GL_DITHER, true}, {GL_FOG, false}, {GL_INDEX_LOGIC_OP, false}, {GL_LINE_SMOOTH, false},
+    {GL_COLOR_SUM, false}, {GL_DITHER, true}, {GL_INDEX_LOGIC_OP, false}, {GL_LINE_SMOOTH, false},
     {GL_LINE_STIPPLE, false}, {GL_MAP1_COLOR_4, false}, {GL_MAP1_INDEX, false}, {GL_MAP1_NORMAL, false},
     {GL_MAP1_TEXTURE_COORD_1, false}, {GL_MAP1_TEXTURE_COORD_2, false}, {GL_MAP1_TEXTURE_COORD_3, false},
     {GL_MAP1_TEXTURE_COORD_4, false}, {GL_MAP1_VERTEX_3, false}, {GL_MAP1_VERTEX_4, false},
     {GL_MAP2_COLOR_4, false}, {GL_MAP2_INDEX, false}, {GL_MAP2_NORMAL, false}, {GL_MAP2_TEXTURE_COORD_1, false},
     {GL_MAP2_TEXTURE_COORD_2, false}, {GL_MAP2_TEXTURE_COORD_3, false}, {GL_MAP2_TEXTURE_COORD_4, false},
     {GL_MAP2_VERTEX_3, false}, {GL_MAP2_VERTEX_4, false}, {GL_MULTISAMPLE, true}, {GL_POINT_SMOOTH, false},
-    {GL_POINT_SPRITE, false}, {GL_POLYGON_OFFSET_FILL, false}, {GL_POLYGON_OFFSET_LINE, false},
+    {GL_POINT_SPRITE, false}, {GL_POLYGON_OFFSET_LINE, false},
     {GL_POLYGON_OFFSET_POINT, false}, {GL_POLYGON_SMOOTH, false}, {GL_POLYGON_STIPPLE, false},
     {GL_SAMPLE_ALPHA_TO_COVERAGE, false}, {GL_SAMPLE_ALPHA_TO_ONE, false}, {GL_SAMPLE_COVERAGE, false},
     {GL_SCISSOR_TEST, false}, {GL_STENCIL_TEST, false}, {GL_TEXTURE_1D, false}, {GL_TEXTURE_2D, false},
@@ -592,7 +594,8 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
         FFC_GET(double(on));
         break;
       }
-      n = get_table_values(pname, out, normalized);
+      n = fog_values(pname, out, normalized);
+      if (n == 0) n = get_table_values(pname, out, normalized);
       if (n == 0) return error(GL_INVALID_ENUM), 0;
     }
   }
@@ -893,6 +896,10 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
     eye = modelview_.back() * obj;
     v.clip = projection_.back() * eye;
   }
+  // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
+  // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
+  // current fog coordinate, which stays 0 here (no glFogCoord).
+  if (fog_ && fog_coord_src_ == GL_FRAGMENT_DEPTH) v.fog = std::abs(eye.z);
   // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
   // takes x, y, z as they are (docs/deviations.md). The lighting divides unless w is 1.
   if (!spec_) eye.w = 1;
@@ -1248,7 +1255,10 @@ void Context::flush_primitive() {
     outside_.resize(verts_.size());
     window_.resize(verts_.size());
     for (size_t i = 0; i < verts_.size(); ++i)
-      if ((outside_[i] = raster::outside_planes(verts_[i].clip)) == 0) window_[i] = raster::map_to_window(verts_[i].clip, rs);
+      if ((outside_[i] = raster::outside_planes(verts_[i].clip)) == 0) {
+        window_[i] = raster::map_to_window(verts_[i].clip, rs);
+        window_[i].fog = verts_[i].fog;
+      }
   }
   // One triangle: inside the view volume from the per-vertex window positions, otherwise
   // clipped. Safe to run on several threads at once when not in feedback mode (only `out` and

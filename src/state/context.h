@@ -118,6 +118,8 @@ class Context {
   void Finish();
   void Flush();
   void PointSize(float size);
+  void Fogfv(GLenum pname, const GLfloat* params);  // fog.cpp, as PolygonOffset
+  void PolygonOffset(GLfloat factor, GLfloat units);
 
   void Begin(GLenum mode);
   void End();
@@ -162,6 +164,7 @@ class Context {
   // The rest of the list (get_table.cpp): state not modelled, at Mesa's defaults; 0 for a name
   // it does not know (no error recorded).
   int get_table_values(GLenum pname, GLdouble* out, int& normalized);
+  int fog_values(GLenum pname, GLdouble* out, int& normalized);  // fog.cpp: fog and polygon offset; 0 otherwise
   std::vector<glm::dmat4>& stack();
   // The modelview as this context's precision keeps it: lights, normals and glGet read this one.
   glm::dmat4 modelview() const;
@@ -211,6 +214,7 @@ class Context {
   // Enables
   bool lighting_ = false, normalize_ = false, rescale_normal_ = false, color_material_ = false;
   bool depth_test_ = false, cull_face_ = false;
+  bool fog_ = false, offset_fill_ = false;
   // Capabilities and client arrays GL knows that the pipeline does not model, by name; missing
   // ones have their default (context.cpp's table).
   std::map<GLenum, bool> other_enables_;
@@ -222,6 +226,13 @@ class Context {
   lighting::ModelParams model_;
   float line_width_ = 1;
   float point_size_ = 1;
+  // Fog and polygon offset (fog.cpp), with GL 2.1's defaults (table 6.9, 6.14). The colour is kept
+  // clamped to [0, 1], as Mesa keeps and reports it for a fixed-point colour buffer.
+  GLenum fog_mode_ = GL_EXP, fog_coord_src_ = GL_FRAGMENT_DEPTH;
+  float fog_density_ = 1, fog_start_ = 0, fog_end_ = 1, fog_index_ = 0;
+  glm::vec4 fog_color_{0, 0, 0, 0};
+  float offset_factor_ = 0, offset_units_ = 0;
+  void fog_raster_state(raster::State& rs) const;
 
   // Transform
   GLenum matrix_mode_ = GL_MODELVIEW;

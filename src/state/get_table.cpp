@@ -9,7 +9,8 @@
 // The names are Mesa's main/get_hash_params.py entries that its compatibility API offers and
 // whose enums belong to GL 1.0 to 2.1; the values are what Mesa returned (tests/state/
 // get_table_test.cpp compares every one of them, through the four glGet functions). Names that
-// belong to other work in progress (GL_POINT_*, GL_FOG_*, GL_POLYGON_OFFSET_*) are not here yet.
+// belong to other work in progress (GL_POINT_*) are not here yet; fog and polygon offset are
+// real state (fog.cpp).
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -167,6 +168,8 @@ constexpr Constant kConstants[] = {
     {GL_MAX_TEXTURE_LOD_BIAS, Rounded, 1, {16}},
     {GL_GENERATE_MIPMAP_HINT, Rounded, 1, {GL_DONT_CARE}},
     {GL_CURRENT_FOG_COORDINATE, Rounded, 1, {0}},
+    {GL_FOG_COORD_ARRAY_TYPE, Rounded, 1, {GL_FLOAT}},
+    {GL_FOG_COORD_ARRAY_STRIDE, Rounded, 1, {0}},
     {GL_CURRENT_SECONDARY_COLOR, Normalized, 4, {0, 0, 0, 1}},
     {GL_SECONDARY_COLOR_ARRAY_SIZE, Rounded, 1, {3}},
     {GL_SECONDARY_COLOR_ARRAY_TYPE, Rounded, 1, {GL_FLOAT}},
@@ -180,6 +183,7 @@ constexpr Constant kConstants[] = {
     {GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, Rounded, 1, {0}},
     {GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, Rounded, 1, {0}},
     {GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING, Rounded, 1, {0}},
+    {GL_FOG_COORD_ARRAY_BUFFER_BINDING, Rounded, 1, {0}},
     {GL_STENCIL_BACK_FUNC, Rounded, 1, {GL_ALWAYS}},
     {GL_STENCIL_BACK_FAIL, Rounded, 1, {GL_KEEP}},
     {GL_STENCIL_BACK_PASS_DEPTH_FAIL, Rounded, 1, {GL_KEEP}},

@@ -174,6 +174,14 @@ GLenum read_pixels_error(GLenum format, GLenum type) {
   // GL_STENCIL_INDEX and GL_COLOR_INDEX with GL_INVALID_OPERATION whatever the type (GL 2.1
   // section 4.3.2), and a name that is no format at all the same way (GL 2.1 says
   // GL_INVALID_ENUM).
+  // But an internal format (1 to 4 components, GL 1.1's sized formats GL_ALPHA4 .. GL_RGBA16, GL
+  // 2.1's sRGB ones, the sized depth formats) is GL_INVALID_ENUM there, whatever the type (measured).
+  const bool internal_format = (format >= 1 && format <= 4) || (format >= 0x803B && format <= 0x805B) ||
+                               (format >= 0x8C40 && format <= 0x8C4B) || (format >= 0x81A5 && format <= 0x81A7);
+  if (internal_format) {
+    const Packed* p = find_packed(type);
+    return p || type == GL_UNSIGNED_INT_24_8 ? GL_INVALID_OPERATION : GL_INVALID_ENUM;  // a packed type first
+  }
   int ch[4];
   if (format != GL_DEPTH_COMPONENT && colour_channels(format, ch) == 0) return GL_INVALID_OPERATION;
   if (is_plain_type(type)) return GL_NO_ERROR;

@@ -108,7 +108,10 @@ void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
 }
 
 bool Context::shaded_path(GLenum mode) const {
-  return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float;
+  // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the
+  // triangle list's kernels have neither a fog coordinate nor a depth offset.
+  return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float &&
+         !fog_ && !offset_fill_;
 }
 
 raster::Workers& Context::workers() {
@@ -132,6 +135,7 @@ raster::State Context::raster_state() const {
   rs.fb_height = fb_.height;
   rs.line_width = line_width_;
   rs.point_size = point_size_;
+  fog_raster_state(rs);
   return rs;
 }
 

@@ -41,6 +41,27 @@ void APIENTRY End() { FWD(End()); }
 void APIENTRY FeedbackBuffer(GLsizei s, GLenum t, GLfloat* b) { FWD(FeedbackBuffer(s, t, b)); }
 void APIENTRY Finish() { FWD(Finish()); }
 void APIENTRY Flush() { FWD(Flush()); }
+// glFogf and glFogi pass one value through glFogfv, the other three 0 (Mesa's fog.c); glFogiv
+// maps a colour's integers onto [-1, 1] and converts the rest directly, an unknown pname passing
+// zeros on for glFogfv to reject.
+void APIENTRY Fogf(GLenum p, GLfloat v) {
+  const GLfloat f[4] = {v, 0, 0, 0};
+  FWD(Fogfv(p, f));
+}
+void APIENTRY Fogfv(GLenum p, const GLfloat* v) { FWD(Fogfv(p, v)); }
+void APIENTRY Fogi(GLenum p, GLint v) {
+  const GLfloat f[4] = {GLfloat(v), 0, 0, 0};
+  FWD(Fogfv(p, f));
+}
+void APIENTRY Fogiv(GLenum p, const GLint* v) {
+  GLfloat f[4] = {0, 0, 0, 0};
+  if (p == GL_FOG_COLOR)
+    for (int k = 0; k < 4; ++k) f[k] = int_to_float(v[k]);
+  else if (p == GL_FOG_MODE || p == GL_FOG_DENSITY || p == GL_FOG_START || p == GL_FOG_END || p == GL_FOG_INDEX ||
+           p == GL_FOG_COORD_SRC)
+    f[0] = GLfloat(v[0]);
+  FWD(Fogfv(p, f));
+}
 void APIENTRY FrontFace(GLenum m) { FWD(FrontFace(m)); }
 void APIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Frustum(l, r, b, t, n, f)); }
 void APIENTRY GetBooleanv(GLenum p, GLboolean* v) { FWD(GetBooleanv(p, v)); }
@@ -100,6 +121,7 @@ void APIENTRY NormalPointer(GLenum t, GLsizei s, const GLvoid* p) { FWD(NormalPo
 void APIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Ortho(l, r, b, t, n, f)); }
 void APIENTRY PixelStorei(GLenum p, GLint v) { FWD(PixelStorei(p, v)); }
 void APIENTRY PointSize(GLfloat s) { FWD(PointSize(s)); }
+void APIENTRY PolygonOffset(GLfloat f, GLfloat u) { FWD(PolygonOffset(f, u)); }
 void APIENTRY PopMatrix() { FWD(PopMatrix()); }
 void APIENTRY PushMatrix() { FWD(PushMatrix()); }
 void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }

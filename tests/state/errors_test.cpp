@@ -2,6 +2,7 @@
 // or inside glBegin/glEnd, on Mesa and on our context. The error glGetError returns must be
 // Mesa's (pinned in the row), the next glGetError GL_NO_ERROR, and the state read back afterwards
 // unchanged and equal to Mesa's. See harness.h for the comparison.
+#include <climits>
 #include <limits>
 
 #include "harness.h"
@@ -591,6 +592,39 @@ INSTANTIATE_TEST_SUITE_P(Misc, Errors, ::testing::ValuesIn(std::vector<Case>{
   {"GetString_ShadingLanguageVersionIsValid", nullptr,
    [] { observe("null", glGetString(GL_SHADING_LANGUAGE_VERSION) == nullptr); }, OK},
   {"GetString_ExtensionsIsValid", nullptr, [] { observe("null", glGetString(GL_EXTENSIONS) == nullptr); }, OK},
+}), case_name);
+
+// glFog and glPolygonOffset (Mesa's fog.c and polygon.c): every pname through the four glFog
+// forms, the values each accepts, and the errors; every state test reads the fog and offset glGet
+// names back (harness.h get_pnames).
+const GLfloat kFogColor[4] = {0.25f, -0.5f, 1.5f, 0.75f};
+const GLint kFogColorI[4] = {INT_MAX / 2, -INT_MAX, INT_MAX, 0};
+INSTANTIATE_TEST_SUITE_P(Fog, Errors, ::testing::ValuesIn(std::vector<Case>{
+  {"Fogi_ModeLinear", nullptr, [] { glFogi(GL_FOG_MODE, GL_LINEAR); }, OK},
+  {"Fogf_ModeExp2", nullptr, [] { glFogf(GL_FOG_MODE, GLfloat(GL_EXP2)); }, OK},
+  {"Fogi_ModeBad", nullptr, [] { glFogi(GL_FOG_MODE, GL_LINE); }, IE},
+  {"Fogf_DensityNegative", nullptr, [] { glFogf(GL_FOG_DENSITY, -0.5f); }, IV},
+  {"Fogf_DensityZero", nullptr, [] { glFogf(GL_FOG_DENSITY, 0); }, OK},
+  {"Fogf_DensityNaN", nullptr, [] { glFogf(GL_FOG_DENSITY, kNaN); }, OK},
+  {"Fogf_Density", nullptr, [] { glFogf(GL_FOG_DENSITY, 2.75f); }, OK},
+  {"Fogf_StartEnd", nullptr, [] { glFogf(GL_FOG_START, -3.5f); glFogf(GL_FOG_END, 1e6f); }, OK},
+  {"Fogi_StartEnd", nullptr, [] { glFogi(GL_FOG_START, 7); glFogi(GL_FOG_END, -2); }, OK},
+  {"Fogf_Index", nullptr, [] { glFogf(GL_FOG_INDEX, 3.6f); }, OK},
+  {"Fogfv_ColorClamped", nullptr, [] { glFogfv(GL_FOG_COLOR, kFogColor); }, OK},
+  {"Fogiv_Color", nullptr, [] { glFogiv(GL_FOG_COLOR, kFogColorI); }, OK},
+  {"Fogiv_Mode", nullptr, [] { const GLint m = GL_EXP2; glFogiv(GL_FOG_MODE, &m); }, OK},
+  {"Fogiv_Density", nullptr, [] { const GLint d = 3; glFogiv(GL_FOG_DENSITY, &d); }, OK},
+  {"Fogi_CoordSrcFogCoord", nullptr, [] { glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD); }, OK},
+  {"Fogi_CoordSrcFragmentDepth", nullptr, [] { glFogi(GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH); }, OK},
+  {"Fogi_CoordSrcBad", nullptr, [] { glFogi(GL_FOG_COORD_SRC, GL_FOG); }, IE},
+  {"Fogf_BadPname", nullptr, [] { glFogf(GL_FOG_HINT, 1); }, IE},
+  {"Fogiv_BadPname", nullptr, [] { const GLint v[4] = {1, 2, 3, 4}; glFogiv(GL_FOG, v); }, IE},
+  {"Fogf_InsideBeginEnd", nullptr, inside([] { glFogf(GL_FOG_START, 2); }), IO},
+  {"Fogfv_InsideBeginEnd", nullptr, inside([] { glFogfv(GL_FOG_COLOR, kFogColor); }), IO},
+  {"PolygonOffset", nullptr, [] { glPolygonOffset(-1.5f, 4.25f); }, OK},
+  {"PolygonOffset_Large", nullptr, [] { glPolygonOffset(1e30f, -1e30f); }, OK},
+  {"PolygonOffset_InsideBeginEnd", nullptr, inside([] { glPolygonOffset(1, 1); }), IO},
+  {"Enable_PolygonOffsetFill", nullptr, [] { glEnable(GL_POLYGON_OFFSET_FILL); }, OK},
 }), case_name);
 
 // A glRenderMode with a bad mode while in feedback mode: Mesa resets the feedback count before it
