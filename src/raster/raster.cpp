@@ -410,7 +410,10 @@ void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, co
         for (int k = 0; k < 4; ++k) c[k] = cp[k].at(X, Y) * w, sc[k] = cp[4 + k].at(X, Y) * w;
         col = summed(c, sc, s);
       }
-      write_fragment(fb, int(xp), fb.height - 1 - int(yd), zp.at(X, Y), col, s);
+      // Depth as the fragment shader interpolates it, two fused multiply-adds (detail::depth_at):
+      // a line's end on a triangle is a tie decided by these bits (seed 000's axes on the cube).
+      const float zplane[3] = {zp.a0, zp.ax, zp.ay};
+      write_fragment(fb, int(xp), fb.height - 1 - int(yd), detail::depth_at(zplane, 1, X, Y), col, s);
     }
 }
 

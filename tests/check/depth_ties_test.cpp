@@ -1,15 +1,17 @@
-// Depth ties as Mesa's llvmpipe decides them: a mesh drawn a second time over itself, and
-// triangles overlapping in one plane, under every depth function. Where two fragments have
-// (nearly) the same depth, which one stays depends on the exact bits of llvmpipe's float depth
-// plane, on the vertex order it sets up and on the 24-bit conversion (raster/span.h); the colour
-// and the depth buffers must both equal Mesa's, value for value. Flat colours from glColor3ub keep
-// colour rounding out of it, so any difference is a coverage or depth decision.
+// Depth ties as Mesa's llvmpipe decides them: a mesh drawn a second time over itself, triangles
+// overlapping in one plane and lines lying on triangles, under every depth function. Where two
+// fragments have (nearly) the same depth, which one stays depends on the exact bits of llvmpipe's
+// float depth planes (triangles: raster/span.h; lines: draw_line), on the vertex order it sets up
+// and on the 24-bit conversion; the colour and the depth buffers must both equal Mesa's, value for
+// value. Each draw has one colour from glColor3ub, which interpolates to itself, so any difference
+// is a coverage or depth decision.
 //
 // Generated cases: random height fields (a grid of shared vertices, glDrawElements) drawn twice
-// with different colours and a random second depth function, and random sets of triangles lying
-// in one random plane (glBegin), each under random perspective or orthographic cameras and
-// random depth ranges, reversed ones among them. The geometry stays inside the view volume:
-// clipped vertices are computed differently (see the depth test's report).
+// with a random second depth function, random sets of triangles lying in one random plane
+// (glBegin), and lines lying on such triangles, each under random perspective or orthographic
+// cameras and random depth ranges, reversed ones among them; each also drawn by the scalar path.
+// The geometry stays inside the view volume: a triangle clipped by the near plane gets depths a
+// few units from Mesa's (its new vertices are computed in double, Mesa's clipper in float).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -138,6 +140,30 @@ Buffers coplanar(backends::Backend& be, int seed, bool soft, std::string* what) 
   return read_back(be, soft);
 }
 
+// Triangles in one random plane, then lines and points lying in it, as seed 000's axes end on the
+// cube's faces: a line's depth (llvmpipe's line set-up) against a triangle's.
+Buffers lines_on_plane(backends::Backend& be, int seed, bool soft, std::string* what) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-0.7f, 0.7f), r(0, 1);
+  be.begin(kSize, kSize);
+  set_up(rng, seed);
+  const float tilt_x = 0.6f * (r(rng) - 0.5f), tilt_y = 0.6f * (r(rng) - 0.5f);
+  auto vertex = [&](float x, float y) { glVertex3f(x, y, tilt_x * x + tilt_y * y); };
+  glDepthFunc(GL_LESS);
+  glColor3ub(200, 40, 0);
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < 6; ++i) vertex(u(rng), u(rng));
+  glEnd();
+  const GLenum f = kFuncs[rng() % 8];
+  glDepthFunc(f);
+  *what = "lines on a plane, depth function 0x" + [f] { char t[8]; std::snprintf(t, sizeof t, "%x", f); return std::string(t); }();
+  glColor3ub(0, 255, 0);
+  glBegin(GL_LINES);
+  for (int i = 0; i < 16; ++i) vertex(u(rng), u(rng));
+  glEnd();
+  return read_back(be, soft);
+}
+
 template <typename Case>
 void compare(Case draw, int cases, int first_seed) {
   auto mesa = backends::make("mesa"), soft = backends::make("soft");
@@ -175,5 +201,8 @@ TEST(DepthTies, MeshDrawnTwiceMatchesMesa) { compare(height_field, 120, 0); }
 
 TEST(DepthTies, CoplanarTrianglesMatchMesa) { compare(coplanar, 120, 1000); }
 
+TEST(DepthTies, LinesOnTrianglesMatchMesa) { compare(lines_on_plane, 120, 2000); }
+
 }  // namespace
 }  // namespace ffc
+
