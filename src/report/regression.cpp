@@ -101,12 +101,13 @@ std::vector<SweepView> camera_sweep() {
 
 const std::vector<KnownPixelFailure>& known_pixel_failures() {
   // Empty: the 18 views at height 3 listed when the sweep was added (on a branch without llvmpipe's
-  // float depth plane) pass since soft computes depth as llvmpipe does (raster/span.h). Their
-  // large pixels were the axes' tips (seed 000 draws the unit axes, ending exactly on the cube's
-  // faces, before the cube): a line's end and a face at the same depth, decided by the exact
-  // bits. The 10k-30k one-step pixels of the smooth ones remain and are within the sweep's step:
-  // faces lit by ambient only are 0.3 red, 76.5 of 255, and the perspective interpolation's
-  // rounding decides 76 or 77 (soft's colour planes are built in double, llvmpipe's in float).
+  // float depth plane) pass since soft computes depth as llvmpipe does (raster/span.h). Each
+  // failed at one or two pixels, measured on that branch: a pixel centre on an edge that a lit
+  // face and a face lit by ambient only (0.3 red, 76 of 255) both reach, at the same depth up to
+  // rounding, so the exact bits decide which face shows (and at angle 234 the red axis's tip,
+  // which ends on the cube's face). The smooth ones' 10k-30k one-step pixels remain and are within
+  // the sweep's step: 0.3 * 255 is 76.5, and the perspective interpolation's rounding decides 76
+  // or 77 (soft's colour planes are built in double, llvmpipe's in float).
   static const std::vector<KnownPixelFailure> known = {};
   return known;
 }
