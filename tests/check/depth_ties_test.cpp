@@ -1,17 +1,18 @@
 // Depth ties as Mesa's llvmpipe decides them: a mesh drawn a second time over itself, triangles
-// overlapping in one plane and lines lying on triangles, under every depth function. Where two
-// fragments have (nearly) the same depth, which one stays depends on the exact bits of llvmpipe's
-// float depth planes (triangles: raster/span.h; lines: draw_line), on the vertex order it sets up
-// and on the 24-bit conversion; the colour and the depth buffers must both equal Mesa's, value for
-// value. Each draw has one colour from glColor3ub, which interpolates to itself, so any difference
-// is a coverage or depth decision.
+// overlapping in one plane, and lines and points lying on triangles, under every depth function.
+// Where two fragments have (nearly) the same depth, which one stays depends on the exact bits of
+// llvmpipe's float depth planes (triangles: raster/span.h; lines: draw_line), on the vertex order
+// it sets up and on the 24-bit conversion; the colour and the depth buffers must both equal
+// Mesa's, value for value. Each draw has one colour from glColor3ub, which interpolates to itself,
+// so any difference is a coverage or depth decision.
 //
 // Generated cases: random height fields (a grid of shared vertices, glDrawElements) drawn twice
 // with a random second depth function, random sets of triangles lying in one random plane
-// (glBegin), and lines lying on such triangles, each under random perspective or orthographic
-// cameras and random depth ranges, reversed ones among them; each also drawn by the scalar path.
-// The geometry stays inside the view volume: a triangle clipped by the near plane gets depths a
-// few units from Mesa's (its new vertices are computed in double, Mesa's clipper in float).
+// (glBegin), and lines and points lying on such triangles, each under random perspective or
+// orthographic cameras and random depth ranges, reversed ones among them; each also drawn by the
+// scalar path. The geometry stays inside the view volume: a triangle clipped by the near plane
+// gets depths a unit or a few from Mesa's (its new vertices are computed in double, Mesa's
+// clipper in float).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -140,8 +141,8 @@ Buffers coplanar(backends::Backend& be, int seed, bool soft, std::string* what) 
   return read_back(be, soft);
 }
 
-// Triangles in one random plane, then lines and points lying in it, as seed 000's axes end on the
-// cube's faces: a line's depth (llvmpipe's line set-up) against a triangle's.
+// Triangles in one random plane, then lines and points (random sizes) lying in it, as seed 000's
+// axes end on the cube's faces: a line's and a point's depth against a triangle's.
 Buffers lines_on_plane(backends::Backend& be, int seed, bool soft, std::string* what) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(-0.7f, 0.7f), r(0, 1);
@@ -159,6 +160,11 @@ Buffers lines_on_plane(backends::Backend& be, int seed, bool soft, std::string* 
   *what = "lines on a plane, depth function 0x" + [f] { char t[8]; std::snprintf(t, sizeof t, "%x", f); return std::string(t); }();
   glColor3ub(0, 255, 0);
   glBegin(GL_LINES);
+  for (int i = 0; i < 16; ++i) vertex(u(rng), u(rng));
+  glEnd();
+  glColor3ub(250, 0, 200);
+  glPointSize(float(1 + rng() % 4));
+  glBegin(GL_POINTS);
   for (int i = 0; i < 16; ++i) vertex(u(rng), u(rng));
   glEnd();
   return read_back(be, soft);
@@ -201,7 +207,7 @@ TEST(DepthTies, MeshDrawnTwiceMatchesMesa) { compare(height_field, 120, 0); }
 
 TEST(DepthTies, CoplanarTrianglesMatchMesa) { compare(coplanar, 120, 1000); }
 
-TEST(DepthTies, LinesOnTrianglesMatchMesa) { compare(lines_on_plane, 120, 2000); }
+TEST(DepthTies, LinesAndPointsOnTrianglesMatchMesa) { compare(lines_on_plane, 120, 2000); }
 
 }  // namespace
 }  // namespace ffc
