@@ -451,7 +451,10 @@ void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, co
         col = summed(c, sc, s);
       }
       if (s.fog) col = apply_fog(col, fp.at(X, Y) / wp.at(X, Y), s);
-      write_fragment(fb, int(xp), fb.height - 1 - int(yd), zp.at(X, Y), col, s);
+      // Depth as the fragment shader interpolates it, two fused multiply-adds (detail::depth_at):
+      // a line's end on a triangle is a tie decided by these bits (seed 000's axes on the cube).
+      const float zplane[3] = {zp.a0, zp.ax, zp.ay};
+      write_fragment(fb, int(xp), fb.height - 1 - int(yd), detail::depth_at(zplane, 1, X, Y), col, s);
     }
 }
 
