@@ -206,6 +206,34 @@ TEST(Polygons, PicturesMatchMesa) {
                                       << " in colour by more than 1; first: " << t.first;
 }
 
+// Triangles, strips, fans, quads, quad strips and polygons reaching past the window and past the
+// near and far planes, smooth and flat: Mesa's clipper (draw_pipe_clip.c) makes the vertices that
+// are drawn, so their positions and colours, and the fan of the clipped polygon, decide the pixels.
+TEST(Polygons, ClippedPicturesMatchMesa) {
+  std::mt19937 rng(302);
+  Tally t;
+  const GLenum modes[] = {GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON};
+  for (int i = 0; i < 1200; ++i) {
+    const GLenum mode = modes[i % 6];
+    const bool flat = i % 12 >= 6, deep = i / 12 % 3 == 0;  // deep: z from -2 to 2, clipped by near and far
+    const int n = mode == GL_QUADS ? 4 : 6;
+    float v[6][3], c[6][3];
+    for (int k = 0; k < n; ++k) {
+      v[k][0] = coord(rng, -40, 104, false), v[k][1] = coord(rng, -40, 104, false);
+      v[k][2] = deep ? std::uniform_real_distribution<float>(-2, 2)(rng) : 0;
+      for (float& ch : c[k]) ch = std::uniform_real_distribution<float>(0, 1)(rng);
+    }
+    compare(t, fmt("mode %g case %g", mode, i), [&] {
+      glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+      glBegin(mode);
+      for (int k = 0; k < n; ++k) glColor3fv(c[k]), glVertex3f(v[k][0] / (kSize / 2) - 1, v[k][1] / (kSize / 2) - 1, v[k][2]);
+      glEnd();
+    }, 1);
+  }
+  EXPECT_EQ(t.coverage + t.colour, 0) << t.coverage << " of " << t.cases << " differ in coverage, " << t.colour
+                                      << " in colour by more than 1; first: " << t.first;
+}
+
 // The feedback buffer: which triangles, in which vertex order, with which positions and colours.
 std::vector<float> feedback(backends::Backend& b, const std::function<void()>& draw) {
   use(b);
@@ -254,6 +282,17 @@ TEST(Feedback, UnclippedOrderMatchesMesa) {
   int cases = 0, differ = 0;
   std::string first;
   feedback_cases(false, cases, differ, first);
+  EXPECT_EQ(differ, 0) << differ << " of " << cases << " feedback buffers differ; first: " << first;
+}
+
+// Every mode, smooth and flat, with vertices well outside the window: positions and colours that
+// Mesa's clipper makes, bit for bit, zero-length clipped lines dropped, and flat primitives'
+// colours as its clipper leaves them (clip_and_map). Flat clipped triangles report colours left in
+// the clipper's temporaries by earlier primitives: the cases run in order on one context each.
+TEST(Feedback, ClippedMatchesMesa) {
+  int cases = 0, differ = 0;
+  std::string first;
+  feedback_cases(true, cases, differ, first);
   EXPECT_EQ(differ, 0) << differ << " of " << cases << " feedback buffers differ; first: " << first;
 }
 
