@@ -296,5 +296,51 @@ TEST(Feedback, ClippedMatchesMesa) {
   EXPECT_EQ(differ, 0) << differ << " of " << cases << " feedback buffers differ; first: " << first;
 }
 
+// Hand-made cases for what the generated ones seldom reach. A line from the window's right edge
+// (x = w exactly) outward clips to zero length, which Mesa's do_clip_line drops; a flat triangle
+// clipped after a smooth one reports, at its clip-made vertices, the colours the smooth one left
+// in the clipper's temporaries.
+TEST(Feedback, ClippedSpecialCasesMatchMesa) {
+  const float c[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}};
+  const float d[3][3] = {{0.5f, 0.5f, 0.5f}, {0.25f, 0.25f, 0.25f}, {0.75f, 0.125f, 0.5f}};
+  auto line = [&](float x0, float y0, float x1, float y1, bool flat) {
+    return [=] {
+      glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+      glBegin(GL_LINES);
+      glColor3fv(c[0]), vertex(x0, y0);
+      glColor3fv(c[1]), vertex(x1, y1);
+      glEnd();
+    };
+  };
+  auto triangle = [&](const float (*col)[3], bool flat) {
+    return [=] {
+      glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+      glBegin(GL_TRIANGLES);
+      glColor3fv(col[0]), vertex(-40, 10);
+      glColor3fv(col[1]), vertex(30, 90);
+      glColor3fv(col[2]), vertex(50, 5);
+      glEnd();
+    };
+  };
+  struct Step {
+    const char* name;
+    std::function<void()> draw;
+    size_t mesa_values;  // pinned: what Mesa 22.3 feeds back (GL_3D_COLOR: 2 + 2 x 7 a line)
+  };
+  const Step steps[] = {
+      {"zero-length line from the right edge", line(64, 10, 80, 10, false), 0},
+      {"zero-length line to the top edge", line(20, 90, 20, 64, true), 0},
+      {"line clipped at both ends, flat", line(-40, 10, 80, 90, true), 15},
+      {"line clipped at its first end, flat", line(-40, 10, 30, 50, true), 15},
+      {"smooth triangle clipped into three", triangle(c, false), 69},
+      {"flat triangle after it", triangle(d, true), 69},
+  };
+  for (const Step& st : steps) {
+    const std::vector<float> m = feedback(*pair().mesa, st.draw), s = feedback(*pair().soft, st.draw);
+    EXPECT_EQ(m.size(), st.mesa_values) << st.name;
+    EXPECT_EQ(m, s) << st.name;
+  }
+}
+
 }  // namespace
 }  // namespace ffc
