@@ -78,8 +78,9 @@ unsigned clipmask(const V4<T>& c) {
   return m;
 }
 
+constexpr size_t kClipRoom = 10;  // a triangle clipped by six planes has at most nine vertices
 template <typename T>
-using ClipPolygon = Fixed<ClipVertex<T>, 10>;
+using ClipPolygon = Fixed<ClipVertex<T>, kClipRoom>;
 
 // do_clip_tri: Sutherland-Hodgman over the planes that some vertex is outside of (a plane the
 // clipmasks do not name is skipped even where a clip-made vertex falls an ulp outside it). A new
@@ -94,16 +95,17 @@ ClipPolygon<T> clip_polygon(ClipPolygon<T> in, unsigned mask, Made&& made) {
     const size_t n = in.size();
     size_t prev = 0;
     T dp_prev = plane_dist(in[0].clip, plane);
+    if (!std::isfinite(dp_prev)) return {};  // a distance that overflows: Mesa discards the primitive
     for (size_t i = 1; i <= n; ++i) {
       const size_t cur = i % n;  // the first vertex again closes the polygon
       const T dp = plane_dist(in[cur].clip, plane);
-      bool different_sign;
-      if (dp_prev >= 0) {
-        out.push_back(in[prev]);
-        different_sign = dp < 0;
-      } else {
-        different_sign = !(dp < 0);
-      }
+      if (!std::isfinite(dp)) return {};
+      // Rounding can make a polygon a hair concave and cross a plane more than twice: past the
+      // room for one (which an exact triangle never needs), the primitive is dropped, as Mesa
+      // drops one past MAX_CLIPPED_VERTICES.
+      const bool keep = dp_prev >= 0, different_sign = keep ? dp < 0 : !(dp < 0);
+      if (out.size() + keep + different_sign > kClipRoom) return {};
+      if (keep) out.push_back(in[prev]);
       if (different_sign) {
         const T denom = dp - dp_prev;
         const ClipVertex<T>&v = in[cur], &p = in[prev];
@@ -130,6 +132,7 @@ ClipPolygon<T> clip_line(const ClipVertex<T>& a, const ClipVertex<T>& b, Made&& 
   for (unsigned mask = ma | mb; mask; mask &= mask - 1) {
     const int plane = __builtin_ctz(mask);
     const T dp0 = plane_dist(a.clip, plane), dp1 = plane_dist(b.clip, plane);
+    if (!std::isfinite(dp0) || !std::isfinite(dp1)) return {};  // as Mesa, discarded
     if (dp1 < 0) {
       const T t = dp1 / (dp1 - dp0);
       t1 = t1 > t ? t1 : t;
