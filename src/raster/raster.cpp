@@ -32,54 +32,123 @@ uint8_t to_unorm8(double c) {
 
 namespace {
 
-const Vertex& flat_source(const Vertex& v, const State& s, const Vertex* provoking) {
-  return s.flat && provoking ? *provoking : v;
-}
+// The clipper of Mesa's draw module (draw_pipe_clip.c), which both llvmpipe's drawing and
+// feedback run, step for step and in the same arithmetic: float where the window is llvmpipe's
+// (State::float_window), double otherwise.
+template <typename T>
+using V4 = glm::vec<4, T>;
 
+template <typename T>
 struct ClipVertex {
-  glm::dvec4 clip;
-  glm::dvec4 c[4];  // front, back, front_sec, back_sec
-  double fog;
+  V4<T> clip;
+  V4<T> c[4];  // front, back, front_sec, back_sec
+  T fog;       // the fog coordinate (Context::vertex), interpolated as the colours
+  int source;  // the primitive's vertex this is, or -1: made by the clipper
 };
 
-ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double t) {
-  ClipVertex r;
-  r.clip = a.clip + (b.clip - a.clip) * t;
-  for (int k = 0; k < 4; ++k) r.c[k] = a.c[k] + (b.c[k] - a.c[k]) * t;
-  r.fog = a.fog + (b.fog - a.fog) * t;
+// Mesa's interp(): dst = out + t (in - out), for the clip position and every colour.
+template <typename T>
+ClipVertex<T> interp(T t, const ClipVertex<T>& out, const ClipVertex<T>& in) {
+  ClipVertex<T> r;
+  r.clip = out.clip + t * (in.clip - out.clip);
+  for (int k = 0; k < 4; ++k) r.c[k] = out.c[k] + t * (in.c[k] - out.c[k]);
+  r.fog = out.fog + t * (in.fog - out.fog);
+  r.source = -1;
   return r;
 }
 
-using ClipPolygon = Fixed<ClipVertex, 10>;
-
-// Sutherland-Hodgman against -w <= x,y,z <= w, in homogeneous coordinates: each plane adds at most
-// one vertex, so a triangle stays within nine.
-ClipPolygon clip(ClipPolygon poly, bool is_line) {
-  for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
-    const int axis = plane / 2;
-    const double sign = plane % 2 ? -1 : 1;
-    auto dist = [&](const ClipVertex& v) { return v.clip.w + sign * v.clip[axis]; };
-    ClipPolygon out;
-    const size_t n = poly.size();
-    const size_t edges = is_line ? 1 : n;
-    if (is_line) {
-      const double da = dist(poly[0]), db = dist(poly[1]);
-      if (da < 0 && db < 0) return {};
-      ClipVertex a = poly[0], b = poly[1];
-      if (da < 0) a = lerp(poly[0], poly[1], da / (da - db));
-      if (db < 0) b = lerp(poly[0], poly[1], da / (da - db));
-      poly = {a, b};
-      continue;
-    }
-    for (size_t i = 0; i < edges; ++i) {
-      const ClipVertex &a = poly[i], &b = poly[(i + 1) % n];
-      const double da = dist(a), db = dist(b);
-      if (da >= 0) out.push_back(a);
-      if ((da >= 0) != (db >= 0)) out.push_back(lerp(a, b, da / (da - db)));
-    }
-    poly = out;
+// Signed distance to view-volume plane i in draw's order (draw_context.c): x <= w, x >= -w,
+// y <= w, y >= -w, z >= -w, z <= w. Mesa takes dot4(clip, plane) left to right; the terms with a
+// zero coefficient add only a signed zero, so it is w - x or x + w exactly.
+template <typename T>
+T plane_dist(const V4<T>& c, int plane) {
+  switch (plane) {
+    case 0: return -c.x + c.w;
+    case 1: return c.x + c.w;
+    case 2: return -c.y + c.w;
+    case 3: return c.y + c.w;
+    case 4: return c.z + c.w;
+    default: return -c.z + c.w;
   }
-  return poly;
+}
+
+// A vertex's clipmask: bit i set when it lies outside plane i (draw_cliptest_tmp.h's tests).
+template <typename T>
+unsigned clipmask(const V4<T>& c) {
+  unsigned m = 0;
+  for (int i = 0; i < 6; ++i) m |= unsigned(plane_dist(c, i) < 0) << i;
+  return m;
+}
+
+constexpr size_t kClipRoom = 10;  // a triangle clipped by six planes has at most nine vertices
+template <typename T>
+using ClipPolygon = Fixed<ClipVertex<T>, kClipRoom>;
+
+// do_clip_tri: Sutherland-Hodgman over the planes that some vertex is outside of (a plane the
+// clipmasks do not name is skipped even where a clip-made vertex falls an ulp outside it). A new
+// vertex is interpolated from whichever end of the edge is nearer the plane, with t from the two
+// distances, as Mesa does to keep shared edges watertight.
+template <typename T, typename Made>
+ClipPolygon<T> clip_polygon(ClipPolygon<T> in, unsigned mask, Made&& made) {
+  while (mask && in.size() >= 3) {
+    const int plane = __builtin_ctz(mask);
+    mask &= mask - 1;
+    ClipPolygon<T> out;
+    const size_t n = in.size();
+    size_t prev = 0;
+    T dp_prev = plane_dist(in[0].clip, plane);
+    if (!std::isfinite(dp_prev)) return {};  // a distance that overflows: Mesa discards the primitive
+    for (size_t i = 1; i <= n; ++i) {
+      const size_t cur = i % n;  // the first vertex again closes the polygon
+      const T dp = plane_dist(in[cur].clip, plane);
+      if (!std::isfinite(dp)) return {};
+      // Rounding can make a polygon a hair concave and cross a plane more than twice: past the
+      // room for one (which an exact triangle never needs), the primitive is dropped, as Mesa
+      // drops one past MAX_CLIPPED_VERTICES.
+      const bool keep = dp_prev >= 0, different_sign = keep ? dp < 0 : !(dp < 0);
+      if (out.size() + keep + different_sign > kClipRoom) return {};
+      if (keep) out.push_back(in[prev]);
+      if (different_sign) {
+        const T denom = dp - dp_prev;
+        const ClipVertex<T>&v = in[cur], &p = in[prev];
+        if (dp < 0)  // going out
+          out.push_back(-dp < dp_prev ? interp(dp / denom, v, p) : interp(-dp_prev / denom, p, v));
+        else  // coming back in
+          out.push_back(-dp_prev < dp ? interp(-dp_prev / denom, p, v) : interp(dp / denom, v, p));
+        made(out[out.size() - 1]);
+      }
+      prev = cur;
+      dp_prev = dp;
+    }
+    in = out;
+  }
+  return in;
+}
+
+// do_clip_line: the line's two ends move in by the largest t of any plane, from each end; a line
+// whose two t add up to 1 or more is dropped (a zero-length remainder included).
+template <typename T, typename Made>
+ClipPolygon<T> clip_line(const ClipVertex<T>& a, const ClipVertex<T>& b, Made&& made) {
+  const unsigned ma = clipmask(a.clip), mb = clipmask(b.clip);
+  T t0 = 0, t1 = 0;
+  for (unsigned mask = ma | mb; mask; mask &= mask - 1) {
+    const int plane = __builtin_ctz(mask);
+    const T dp0 = plane_dist(a.clip, plane), dp1 = plane_dist(b.clip, plane);
+    if (!std::isfinite(dp0) || !std::isfinite(dp1)) return {};  // as Mesa, discarded
+    if (dp1 < 0) {
+      const T t = dp1 / (dp1 - dp0);
+      t1 = t1 > t ? t1 : t;
+    }
+    if (dp0 < 0) {
+      const T t = dp0 / (dp0 - dp1);
+      t0 = t0 > t ? t0 : t;
+    }
+    if (t0 + t1 >= 1) return {};
+  }
+  ClipPolygon<T> out{ma ? interp(t0, a, b) : a, mb ? interp(t1, b, a) : b};
+  if (ma) made(out[0]);
+  if (mb) made(out[1]);
+  return out;
 }
 
 }  // namespace
@@ -139,18 +208,113 @@ bool culled(bool back, const State& s) {
   return s.cull && (s.cull_mode == GL_FRONT_AND_BACK || (s.cull_mode == GL_BACK) == back);
 }
 
+namespace {
+
+// The window position of a clip-made vertex as draw_pipe_clip.c's interp() computes it: 1/w, then
+// x / w scaled and translated in plain float multiplies and adds (no fused multiply-add, unlike
+// the vertex path's viewport transform in map_float), then snapped as map_float snaps.
+WindowVertex map_clip_made(const glm::vec4& c, const State& s) {
+  const glm::ivec4 vp = s.viewport;
+  const float oow = 1.0f / c.w;
+  const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
+  const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
+  const float x = c.x * oow * hw + (float(vp[0]) + hw);
+  const float y_down = c.y * oow * -hh + (float(s.fb_height) - (float(vp[1]) + hh));
+  const float z = c.z * oow * ((df - dn) * 0.5f) + (df + dn) * 0.5f;
+  WindowVertex w;
+  w.inv_w = oow;
+  w.pos = {x, float(s.fb_height) - y_down, z};
+  w.y_down = y_down, w.fx = x;
+  w.snapped = true;
+  w.sx = round_even((x - 0.5f) * 256.0f) + 128;
+  w.sy = int64_t(s.fb_height - 1) * 256 - round_even((y_down - 0.5f) * 256.0f) + 128;
+  return w;
+}
+
+template <typename T>
+WindowPolygon clip_and_map_in(const Vertex* prim, size_t count, const State& s, const Vertex* provoking,
+                              bool is_line, bool back, ClipTemps* feedback) {
+  ClipPolygon<T> cv;
+  auto colours = [](const Vertex& v, glm::vec<4, T>* c) {
+    c[0] = glm::vec<4, T>(v.front), c[1] = glm::vec<4, T>(v.back);
+    c[2] = glm::vec<4, T>(v.front_sec), c[3] = glm::vec<4, T>(v.back_sec);
+  };
+  for (size_t i = 0; i < count; ++i) {
+    ClipVertex<T> v;
+    v.clip = glm::vec<4, T>(prim[i].clip);
+    // Drawing flat: every vertex carries the provoking one's colours (the rasterizer reads them
+    // from one vertex; which, the fan below decides). Feedback reports vertices, see below.
+    colours(s.flat && provoking && !feedback ? *provoking : prim[i], v.c);
+    v.fog = T(prim[i].fog);
+    v.source = int(i);
+    cv.push_back(v);
+  }
+  // Feedback: Mesa's clipper writes each vertex it makes into its next temporary vertex
+  // (draw_pipe_clip.c, stage tmp[], from 0 for each primitive). Smooth, the colours are
+  // interpolated there; flat, they are constant attributes that interp() leaves alone, so a
+  // clip-made vertex reports whatever colours its temporary last held, from an earlier primitive.
+  unsigned tmpnr = 0;
+  auto slot = [&](glm::vec<4, T>* c, bool load) {
+    glm::vec4* t = feedback->c[std::min<unsigned>(tmpnr++, ClipTemps::kSlots - 1)];
+    for (int k = 0; k < 4; ++k)
+      if (load) c[k] = glm::vec<4, T>(t[k]);
+      else t[k] = glm::vec4(c[k]);
+  };
+  auto made = [&](ClipVertex<T>& v) {
+    if (feedback) slot(v.c, s.flat);
+  };
+  ClipPolygon<T> clipped;
+  if (is_line) {
+    if (clipmask(cv[0].clip) & clipmask(cv[1].clip)) return {};  // both ends outside one plane
+    clipped = clip_line(cv[0], cv[1], [](ClipVertex<T>&) {});
+    // A clip-made end is temporary 0 or 1, after the end it replaces. Flat, it takes the
+    // provoking (second) vertex's colours (do_clip_line's copy_flat); an end that was not
+    // clipped keeps its own.
+    for (unsigned end = 0; end < clipped.size(); ++end) {
+      ClipVertex<T>& v = clipped[end];
+      if (v.source >= 0) continue;
+      if (s.flat && provoking && feedback) colours(*provoking, v.c);
+      if (feedback) tmpnr = end, slot(v.c, false);
+    }
+  } else {
+    unsigned all = ~0u, any = 0;
+    for (const ClipVertex<T>& v : cv) {
+      const unsigned m = clipmask(v.clip);
+      all &= m, any |= m;
+    }
+    if (all) return {};  // every vertex outside one plane
+    clipped = clip_polygon(cv, any, made);
+    if (clipped.size() < 3) return {};
+    // Feedback, flat: do_clip_tri copies the polygon's first vertex, which ends every triangle of
+    // its fan, into the next temporary with the provoking vertex's colours, unless it is the
+    // provoking vertex itself; the others keep theirs (own, or their temporary's).
+    if (feedback && s.flat && provoking && clipped[0].source != int(count) - 1)
+      colours(*provoking, clipped[0].c), slot(clipped[0].c, false);
+  }
+  for (const ClipVertex<T>& v : clipped)  // e.g. w ~ 1e-40: 1/w is no float, nor are the positions
+    if (!w_mappable(double(v.clip.w))) return {};
+  WindowPolygon out;
+  const bool use_back = back && s.two_side;
+  for (const ClipVertex<T>& v : clipped) {
+    WindowVertex w = v.source >= 0 || !s.float_window ? map_to_window(v.source >= 0 ? prim[v.source].clip : glm::dvec4(v.clip), s)
+                                                      : map_clip_made(glm::vec4(v.clip), s);
+    w.color = glm::dvec4(use_back ? v.c[1] : v.c[0]);
+    w.sec = glm::dvec4(use_back ? v.c[3] : v.c[2]);
+    w.fog = v.source >= 0 ? prim[v.source].fog : double(v.fog);
+    out.push_back(w);
+  }
+  return out;
+}
+
+}  // namespace
+
 WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,
-                           bool* back_facing) {
+                           bool* back_facing, ClipTemps* feedback) {
   // A NaN or infinite clip coordinate (unspecified input, GL 2.1 section 2.1.1) has no place in the
   // window: the primitive is dropped, so nothing non-finite reaches setup or feedback.
   for (size_t i = 0; i < count; ++i) {
     const glm::dvec4& c = prim[i].clip;
     if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) return {};
-  }
-  ClipPolygon cv;
-  for (size_t i = 0; i < count; ++i) {
-    const Vertex& v = flat_source(prim[i], s, provoking);  // flat: every vertex carries the provoking one's colours
-    cv.push_back({prim[i].clip, {v.front, v.back, v.front_sec, v.back_sec}, prim[i].fog});
   }
   // Facing is decided before clipping, from the whole primitive, in window orientation.
   bool back = false;
@@ -159,19 +323,8 @@ WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, con
     if (culled(back, s)) return {};
   }
   if (back_facing) *back_facing = back;
-  const ClipPolygon clipped = clip(cv, is_line);
-  for (const ClipVertex& v : clipped)  // e.g. w ~ 1e-40: 1/w is no float, nor are the positions
-    if (!w_mappable(v.clip.w)) return {};
-  WindowPolygon out;
-  for (const ClipVertex& v : clipped) {
-    WindowVertex w = map_to_window(v.clip, s);
-    const bool use_back = back && s.two_side;
-    w.color = use_back ? v.c[1] : v.c[0];
-    w.sec = use_back ? v.c[3] : v.c[2];
-    w.fog = v.fog;
-    out.push_back(w);
-  }
-  return out;
+  return s.float_window ? clip_and_map_in<float>(prim, count, s, provoking, is_line, back, feedback)
+                        : clip_and_map_in<double>(prim, count, s, provoking, is_line, back, feedback);
 }
 
 namespace {

@@ -128,13 +128,22 @@ unsigned outside_planes(const V& c) {
 bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s);
 bool culled(bool back_facing, const State& s);
 
-// Clips a polygon (a triangle or a line when size 2) against the view volume and maps it to the
-// window. Returns the clipped polygon with colours chosen by facing; empty when culled or clipped
-// away. `provoking` is the vertex whose colours a flat primitive takes (it may be outside `prim`:
-// a quad split in two keeps its 4th vertex); null keeps every vertex's own colours (feedback).
+// Clips a triangle (or a line, count 2) against the view volume as Mesa's draw module does
+// (draw_pipe_clip.c) and maps it to the window. Returns the clipped polygon with colours chosen by
+// facing, in Mesa's order (its fan is (v[i], v[i+1], v[0])); empty when culled or clipped away.
+// `provoking` is the vertex whose colours a flat primitive takes (it may be outside `prim`: a quad
+// split in two keeps its 4th vertex); null keeps every vertex's own colours. Drawing flat, every
+// vertex takes them; in `feedback` (non-null), only the vertices Mesa's clipper gives them (the
+// polygon's first, a line's clip-made ends), for a primitive whose last vertex provokes.
+// Feedback keeps Mesa's clipper's temporary vertices' colours from one primitive to the next
+// (see clip_and_map_in), one set per context: front, back, front_sec, back_sec.
+struct ClipTemps {
+  static constexpr unsigned kSlots = 16;  // a triangle against six planes makes at most 13
+  glm::vec4 c[kSlots][4]{};
+};
 using WindowPolygon = Fixed<WindowVertex, 10>;
 WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,
-                           bool* back_facing = nullptr);
+                           bool* back_facing = nullptr, ClipTemps* feedback = nullptr);
 
 // A triangle set up for rasterization: edges snapped to 1/256 pixel (llvmpipe's 8 subpixel bits),
 // attribute planes from the unsnapped positions, as llvmpipe builds them.

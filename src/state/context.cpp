@@ -1222,9 +1222,10 @@ void Context::flush_primitive() {
     else feedback_overflow_ = true;
     ++feedback_count_;
   };
-  // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it:
-  // a fan of triangles (v[i], v[i+1], v[0]), the first vertex last.
-  auto emit_feedback = [&](GLenum kind, const raster::WindowVertex* w, size_t count) {
+  // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it
+  // (emit_poly in draw_pipe_clip.c): a fan of triangles (v[i], v[i+1], v[0]), the first vertex
+  // last, also when the clipped polygon is a triangle.
+  auto emit_feedback = [&](GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped) {
     auto one = [&](std::initializer_list<const raster::WindowVertex*> vs) {
       put(kind);
       if (kind == GL_POLYGON_TOKEN) put(double(vs.size()));
@@ -1241,7 +1242,7 @@ void Context::flush_primitive() {
     };
     if (kind == GL_POINT_TOKEN) return one({&w[0]});
     if (kind != GL_POLYGON_TOKEN) return one({&w[0], &w[1]});
-    if (count == 3) return one({&w[0], &w[1], &w[2]});
+    if (!clipped) return one({&w[0], &w[1], &w[2]});
     for (size_t i = 1; i + 1 < count; ++i) one({&w[i], &w[i + 1], &w[0]});
   };
 
@@ -1251,6 +1252,7 @@ void Context::flush_primitive() {
   // Most triangles lie inside the view volume: their vertices map to the window once, however
   // many triangles share them, and they skip clipping.
   const bool triangles = prim_mode_ >= GL_TRIANGLES;
+  bool any_outside = false;
   if (triangles) {
     outside_.resize(verts_.size());
     window_.resize(verts_.size());
@@ -1258,6 +1260,8 @@ void Context::flush_primitive() {
       if ((outside_[i] = raster::outside_planes(verts_[i].clip)) == 0) {
         window_[i] = raster::map_to_window(verts_[i].clip, rs);
         window_[i].fog = verts_[i].fog;
+      } else {
+        any_outside = true;
       }
   }
   // One triangle: inside the view volume from the per-vertex window positions, otherwise
@@ -1281,7 +1285,7 @@ void Context::flush_primitive() {
           in[k].color = use_back ? verts_[v[k]].back : verts_[v[k]].front;
           in[k].sec = use_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
         }
-        return emit_feedback(GL_POLYGON_TOKEN, in, 3);
+        return emit_feedback(GL_POLYGON_TOKEN, in, 3, false);
       }
       std::array<raster::SetupVertex, 3> sv;
       for (int k = 0; k < 3; ++k) {
@@ -1293,9 +1297,9 @@ void Context::flush_primitive() {
       return;
     }
     for (int k = 0; k < 3; ++k) scratch.prim[k] = verts_[v[k]];
-    const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs, feedback ? nullptr : &at(provoking), false);
+    const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs, &at(provoking), false, nullptr, feedback ? &clip_temps_ : nullptr);
     if (w.empty()) return;
-    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w.begin(), w.size());
+    if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w.begin(), w.size(), true);
     raster::Triangle t;
     for (size_t k = 1; k + 1 < w.size(); ++k)
       if (raster::setup(w[k], w[k + 1], w[0], rs, t)) out.push_back(t);
@@ -1308,10 +1312,11 @@ void Context::flush_primitive() {
     for (size_t k : idx) prim.push_back(at(k));
     const bool is_point = kind == GL_POINT_TOKEN;
     if (is_point) prim.push_back(prim[0]);  // a point clips like a degenerate line
-    // Feedback reports each vertex's own colour (Mesa does not flatten there).
-    const raster::WindowPolygon w = raster::clip_and_map(prim.begin(), 2, rs, feedback ? nullptr : &at(provoking), true);
+    // Feedback reports each vertex's own colour (Mesa does not flatten there), but for the ends
+    // that clipping makes (clip_and_map).
+    const raster::WindowPolygon w = raster::clip_and_map(prim.begin(), 2, rs, &at(provoking), true, nullptr, feedback ? &clip_temps_ : nullptr);
     if (w.empty()) return;
-    if (feedback) return emit_feedback(kind, w.begin(), w.size());
+    if (feedback) return emit_feedback(kind, w.begin(), w.size(), true);
     if (is_point) {
       flush_clear();
       raster::draw_point(fb_, w[0], rs);
@@ -1371,9 +1376,11 @@ void Context::flush_primitive() {
     // fan (q0, q1, q2), (q0, q2, q3); feedback, and drawing flat quads, take the draw module's
     // decomposition for the last vertex provoking: (q0, q1, q3), (q1, q2, q3); feedback gives a
     // polygon's fan with its first vertex last. GL 2.1 leaves the split open (section 2.6.1).
+    // A draw with any vertex outside the view volume runs the draw module's pipeline (its clipper)
+    // for all of its primitives, and so takes that decomposition too, drawing smooth.
     case GL_QUADS:  // the 4th vertex provokes
       for (size_t i = 0; i + 3 < n; i += 4) {
-        if (feedback || rs.flat) {
+        if (feedback || rs.flat || any_outside) {
           emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
           emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
         } else {
@@ -1384,7 +1391,7 @@ void Context::flush_primitive() {
       break;
     case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2), as Mesa's feedback (2i+2, 2i, 2i+1, 2i+3); 2i+3 provokes
       for (size_t i = 0; i + 3 < n; i += 2) {
-        if (feedback) {
+        if (feedback || any_outside) {
           emit({i + 2, i, i + 3}, i + 3, GL_POLYGON_TOKEN);
           emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
         } else {

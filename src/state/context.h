@@ -318,6 +318,7 @@ class Context {
   GLsizei feedback_size_ = 0, feedback_count_ = 0;
   GLenum feedback_type_ = GL_2D;
   bool feedback_overflow_ = false;
+  raster::ClipTemps clip_temps_;  // Mesa's clipper's temporaries, as feedback sees them
   GLint pack_alignment_ = 4, unpack_alignment_ = 4;
   std::map<GLenum, GLint> pixel_store_;  // the other glPixelStorei values, recorded and reported (0 by default)
   std::set<std::string> deviations_;

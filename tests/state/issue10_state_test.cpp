@@ -1,6 +1,7 @@
 // Issue 10's state items against Mesa, each a row that failed before its fix: current values
 // after glEnd, glFinish/glFlush inside glBegin/glEnd, the viewport's bounds, NaN in the clamped
 // values, glRasterPos/glDrawPixels; and, soft alone, a draw too large for memory.
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <limits>
@@ -33,7 +34,40 @@ const GLubyte kImage[5 * 3 * 4] = {
 const GLfloat kFloatImage[3 * 2 * 3] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f,
                                         1.5f, -0.5f, 0.25f, 0.33f, 0.66f, 0.99f, 0, 1, 0.5f};
 
+// Feedback into a buffer of `size` floats: the count glRenderMode returns on leaving feedback
+// mode (-1 on overflow), and the buffer with 8 floats past its end, which must stay untouched.
+Calls feedback_into(GLsizei size, GLenum type, const Calls& draw) {
+  return [=] {
+    static GLfloat buf[64];
+    std::fill(std::begin(buf), std::end(buf), -7.0f);
+    glFeedbackBuffer(size, type, buf);
+    glRenderMode(GL_FEEDBACK);
+    draw();
+    observe("count", glRenderMode(GL_RENDER));
+    for (GLsizei i = 0; i < size + 8; ++i) observe("buf[" + std::to_string(i) + "]", buf[i]);
+  };
+}
+
+// The fuzzer's strip: a triangle with two equal vertices and one above the view volume, clipped.
+void clipped_degenerate_strip() {
+  glBegin(GL_TRIANGLE_STRIP);
+  glVertex2f(0, 0), glVertex3f(0, 0, 0), glVertex3f(0.84375f, 1.421875f, 0.578125f);
+  glEnd();
+}
+
+void clipped_line() {
+  glBegin(GL_LINES);
+  glColor3f(1, 0, 0), glVertex2f(-2, 0.25f), glColor3f(0, 1, 0), glVertex2f(0.5f, -0.5f);
+  glEnd();
+}
+
 INSTANTIATE_TEST_SUITE_P(State, Issue10, ::testing::ValuesIn(std::vector<Case>{
+  // Item 14: a token is written where it fits and counted either way; the count overflows to -1.
+  {"FeedbackOverflowOneFloat", nullptr, feedback_into(1, GL_2D, clipped_degenerate_strip), OK},
+  {"FeedbackOverflowSeven2D", nullptr, feedback_into(7, GL_2D, clipped_degenerate_strip), OK},
+  {"FeedbackFitsClippedStrip", nullptr, feedback_into(40, GL_2D, clipped_degenerate_strip), OK},
+  {"FeedbackOverflowClippedLine", nullptr, feedback_into(9, GL_3D_COLOR, clipped_line), OK},
+  {"FeedbackFitsClippedLine", nullptr, feedback_into(15, GL_3D_COLOR, clipped_line), OK},
   // Item 3: a glColor / glNormal after the last glVertex of GL_TRIANGLES stays current.
   {"ColourAfterLastVertexOfTriangles", nullptr, [] {
      glBegin(GL_TRIANGLES);
