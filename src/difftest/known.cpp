@@ -23,7 +23,8 @@ bool is(const Call& c, const char* name) { return name_of(c) == name; }
 // error of the call itself, which both sides must raise alike.
 bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& mesa,
                         bool (*call_matches)(const Call&)) {
-  return any_call(s, m.call, [&](const Call& c, size_t i) {
+  // A feedback buffer is compared as it ends up: a call after the one that gave it counts too.
+  return any_call(s, m.kind == "feedback" ? -1 : m.call, [&](const Call& c, size_t i) {
     return call_matches(c) && i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR &&
            !(m.kind == "error" && int(i) == m.call);
   });
@@ -51,7 +52,7 @@ const std::vector<KnownDeviation>& known_deviations() {
          });
        }},
       {"mesa-render-mode-applied",
-       "Mesa records GL_INVALID_OPERATION for glRenderMode(GL_FEEDBACK/GL_SELECT) without a buffer and switches the mode all the same (feedback.c)",
+       "Mesa records GL_INVALID_OPERATION for glRenderMode(GL_FEEDBACK/GL_SELECT) without a buffer and switches the mode all the same, and GL_INVALID_ENUM for a bad mode after emptying the feedback buffer (feedback.c)",
        [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult&) {
          return after_mesa_applied(s, m, mesa, [](const Call& c) { return is(c, "glRenderMode"); });
        }},

@@ -145,8 +145,15 @@ bool slot_close(size_t i, double a, double b, double rel) {
   const Probe* p = probe_of(i);
   if (!p || p->q == Query::IsEnabled) return false;
   if (p->q == Query::Integerv) {
-    if (p->a == GL_MODELVIEW_MATRIX || p->a == GL_PROJECTION_MATRIX) return std::fabs(a - b) <= rel * 2147483648.0;
-    return false;
+    // Values GL maps linearly onto the integers (colours, normals, depths: 2.13.7, 6.1.2) are floats
+    // underneath: compared as the floats are, scaled.
+    switch (p->a) {
+      case GL_MODELVIEW_MATRIX: case GL_PROJECTION_MATRIX: case GL_CURRENT_COLOR: case GL_CURRENT_NORMAL:
+      case GL_CURRENT_RASTER_COLOR: case GL_COLOR_CLEAR_VALUE:
+      case GL_LIGHT_MODEL_AMBIENT: case GL_FOG_COLOR: case GL_DEPTH_RANGE: case GL_DEPTH_CLEAR_VALUE:
+        return std::fabs(a - b) <= rel * 2147483648.0;
+      default: return false;
+    }
   }
   return std::fabs(a - b) <= rel * std::max({1.0, std::fabs(a), std::fabs(b)});
 }

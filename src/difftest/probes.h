@@ -32,8 +32,8 @@ std::vector<double> read_back();
 // The probe that value i of a read-back belongs to (nullptr for the trailing error).
 const Probe* probe_of(size_t i);
 // Whether values a and b of slot i agree: floats and doubles within rel relative to
-// max(1, |a|, |b|), integers exactly, the matrices' integers within rel of 2^31 (Mesa maps them
-// like colours), NaN equal to NaN.
+// max(1, |a|, |b|), integers exactly but for those GL maps from floats (colours, normals, depths;
+// Mesa maps the matrices the same way): within rel of 2^31; NaN equal to NaN.
 bool slot_close(size_t i, double a, double b, double rel = 1e-6);
 
 }  // namespace ffc::difftest

@@ -1217,11 +1217,7 @@ void Context::flush_primitive() {
   std::vector<raster::Triangle>& tris = triangles_;
   tris.clear();
 
-  auto put = [&](double x) {
-    if (feedback_count_ < feedback_size_) feedback_[feedback_count_] = GLfloat(x);
-    else feedback_overflow_ = true;
-    ++feedback_count_;
-  };
+  auto put = [&](double x) { feedback_put(x); };
   // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it
   // (emit_poly in draw_pipe_clip.c): a fan of triangles (v[i], v[i+1], v[0]), the first vertex
   // last, also when the clipped polygon is a triangle.
@@ -1415,6 +1411,12 @@ void Context::flush_primitive() {
 }
 
 // ---------------------------------------------------------------- feedback and read-back
+
+void Context::feedback_put(double x) {
+  if (feedback_count_ < feedback_size_) feedback_[feedback_count_] = GLfloat(x);
+  else feedback_overflow_ = true;
+  ++feedback_count_;
+}
 
 void Context::FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
   // Mesa's order (feedback.c): feedback mode, the size, a null buffer, then the type.

@@ -177,6 +177,8 @@ class Context {
   Fixed draw_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::Gl42; }
   Fixed element_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::MesaCall; }
   void process_vertex(const glm::dvec4& obj);
+  glm::dvec4 mesa_raster_color(const float obj[4]) const;  // raster_pos.cpp
+  void raster_pos_spec(double x, double y, double z, double w);
   void undefer();  // immediate-mode vertices kept for glEnd: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
@@ -318,6 +320,7 @@ class Context {
   GLsizei feedback_size_ = 0, feedback_count_ = 0;
   GLenum feedback_type_ = GL_2D;
   bool feedback_overflow_ = false;
+  void feedback_put(double x);  // the next value, or the overflow noted
   raster::ClipTemps clip_temps_;  // Mesa's clipper's temporaries, as feedback sees them
   GLint pack_alignment_ = 4, unpack_alignment_ = 4;
   std::map<GLenum, GLint> pixel_store_;  // the other glPixelStorei values, recorded and reported (0 by default)

@@ -7,6 +7,7 @@
 // alignment, row length and skips. Other valid formats and types (depth, stencil, colour index,
 // the integer and packed types) are not: the call records GL_INVALID_OPERATION and says so once
 // on stderr; it never draws something else in their place.
+#include <array>
 #include <cmath>
 #include <limits>
 #include <cstdio>
@@ -22,22 +23,226 @@
 
 namespace ffc::state {
 
+namespace {
+
+// Mesa's float vector steps (main/macros.h), each in its order of operations: the raster position
+// must round as Mesa's does.
+using F3 = std::array<float, 3>;
+float dot3(const F3& a, const F3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+void normalize3(F3& v) {  // a zero vector stays as it is
+  float len = dot3(v, v);
+  if (len != 0) {
+    len = 1.0f / std::sqrt(len);
+    for (float& c : v) c *= len;
+  }
+}
+// n as a row vector times the matrix's upper 3x3 (TRANSFORM_NORMAL): m's transpose times n.
+F3 row_times(const F3& n, const float* m) {
+  return {n[0] * m[0] + n[1] * m[1] + n[2] * m[2], n[0] * m[4] + n[1] * m[5] + n[2] * m[6],
+          n[0] * m[8] + n[1] * m[9] + n[2] * m[10]};
+}
+std::array<float, 4> times_point(const float* m, const float* p) {  // TRANSFORM_POINT
+  std::array<float, 4> q;
+  for (int i = 0; i < 4; ++i) q[size_t(i)] = m[i] * p[0] + m[4 + i] * p[1] + m[8 + i] * p[2] + m[12 + i] * p[3];
+  return q;
+}
+F3 f3(const glm::dvec4& v) { return {float(v.x), float(v.y), float(v.z)}; }
+float clamp01(float x) { return x < 0 ? 0 : (x > 1 ? 1 : x); }  // a NaN stays NaN (Mesa's CLAMP)
+
+// Whether Mesa's math module would call this modelview length-preserving (a rotation and a
+// translation at most), judged from the values as its analyse_from_scratch judges them.
+bool length_preserving(const glm::mat4& m4) {
+  const float* m = glm::value_ptr(m4);
+  if (m[3] != 0 || m[7] != 0 || m[11] != 0 || m[15] != 1) return false;  // projective
+  const F3 c0{m[0], m[1], m[2]}, c1{m[4], m[5], m[6]}, c2{m[8], m[9], m[10]};
+  auto sq = [](float x) { return x * x; };
+  const float l0 = dot3(c0, c0), l1 = dot3(c1, c1), l2 = dot3(c2, c2);
+  if (!(sq(l0 - l1) < sq(1e-6f) && sq(l0 - l2) < sq(1e-6f) && sq(l0 - 1.0f) <= sq(1e-6f))) return false;
+  if (!(sq(dot3(c0, c1)) < sq(1e-6f))) return false;
+  const F3 cross{c0[1] * c1[2] - c0[2] * c1[1], c0[2] * c1[0] - c0[0] * c1[2], c0[0] * c1[1] - c0[1] * c1[0]};
+  const F3 d{cross[0] - c2[0], cross[1] - c2[1], cross[2] - c2[2]};
+  return dot3(d, d) < sq(1e-6f);
+}
+
+// The modelview's inverse as Mesa's math module computes it for a length-preserving matrix
+// (invert_matrix_3d: the rotation transposed, the translation taken back through it), else
+// glm's general inverse.
+glm::mat4 mesa_inverse(const glm::mat4& m, bool rigid) {
+  if (!rigid) {  // a singular matrix's inverse is the identity (matrix_invert)
+    const glm::mat4 inv = glm::inverse(m);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(inv[c][r])) return glm::mat4(1.0f);
+    return glm::determinant(m) != 0 ? inv : glm::mat4(1.0f);
+  }
+  glm::mat4 out(1.0f);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[c][r] = m[r][c];
+  for (int r = 0; r < 3; ++r) out[3][r] = -(m[3][0] * out[0][r] + m[3][1] * out[1][r] + m[3][2] * out[2][r]);
+  return out;
+}
+
+}  // namespace
+
+// The raster position's colour as Mesa 22.3 lights it (main/rastpos.c, shade_rastpos), not through
+// the vertex program that lights vertices: in float, the front material only, the current normal as
+// it is (GL_NORMALIZE does not apply), and with Mesa's choice of space (light.c): eye space when a
+// light is positional, the viewer is local or the modelview does not preserve lengths; otherwise
+// object space, with the lights and the eye direction taken back through the modelview's inverse.
+// Mesa's quirk: the vertex it lights is the object-space position in both spaces, so that in eye
+// space a positional light is measured from the wrong point (docs/deviations.md).
+glm::dvec4 Context::mesa_raster_color(const float obj[4]) const {
+  const glm::mat4& mv4 = modelview_f_.back();
+  const bool rigid = length_preserving(mv4);
+  const glm::mat4 inv4 = mesa_inverse(mv4, rigid);
+  const float *mv = glm::value_ptr(mv4), *inv = glm::value_ptr(inv4);
+  bool need_eye = model_.local_viewer || !rigid;
+  for (const lighting::LightParams& l : lights_)
+    if (l.enabled && float(l.position.w) != 0) need_eye = true;
+
+  const F3 eye_z = need_eye ? F3{0, 0, 1} : row_times({0, 0, 1}, mv);
+  const F3 objnorm{float(normal_.x), float(normal_.y), float(normal_.z)};
+  const F3 normal = need_eye ? row_times(objnorm, inv) : objnorm;
+  const F3 vertex{obj[0], obj[1], obj[2]};
+  const lighting::MaterialParams& mat = materials_[0];
+  const F3 mat_amb = f3(mat.ambient), mat_dif = f3(mat.diffuse), mat_spe = f3(mat.specular);
+  const float shine = float(mat.shininess);
+
+  F3 diffuse = f3(mat.emission), specular{0, 0, 0};
+  const F3 model_amb = f3(model_.ambient);
+  for (int k = 0; k < 3; ++k) diffuse[size_t(k)] += mat_amb[size_t(k)] * model_amb[size_t(k)];
+  const float alpha = clamp01(float(mat.diffuse.w));
+
+  for (const lighting::LightParams& l : lights_) {
+    if (!l.enabled) continue;
+    const float eye_pos[4] = {float(l.position.x), float(l.position.y), float(l.position.z), float(l.position.w)};
+    std::array<float, 4> pos;
+    if (need_eye) pos = {eye_pos[0], eye_pos[1], eye_pos[2], eye_pos[3]};
+    else pos = times_point(inv, eye_pos);
+    const bool positional = eye_pos[3] != 0, spot = float(l.spot_cutoff) != 180.0f;
+    F3 vp_inf{0, 0, 0}, h_inf{0, 0, 0};
+    float spot_inf = 1;
+    if (!positional) {
+      vp_inf = {pos[0], pos[1], pos[2]};
+      normalize3(vp_inf);
+      if (!model_.local_viewer) {
+        h_inf = {vp_inf[0] + eye_z[0], vp_inf[1] + eye_z[1], vp_inf[2] + eye_z[2]};
+        normalize3(h_inf);
+      }
+    } else {
+      const float w_inv = 1.0f / pos[3];
+      pos[0] *= w_inv, pos[1] *= w_inv, pos[2] *= w_inv;
+    }
+    float cos_cutoff = float(std::cos(double(float(l.spot_cutoff)) * M_PI / 180.0));
+    if (cos_cutoff < 0) cos_cutoff = 0;
+    const float exponent = float(l.spot_exponent);
+    F3 spot_dir{0, 0, 0};
+    if (spot) {
+      spot_dir = f3(glm::dvec4(l.spot_direction, 0));
+      normalize3(spot_dir);
+      if (!need_eye) spot_dir = row_times(spot_dir, mv);
+      normalize3(spot_dir);
+      if (!positional) {
+        const float pv_dot_dir = -dot3(vp_inf, spot_dir);
+        spot_inf = pv_dot_dir > cos_cutoff ? std::pow(pv_dot_dir, exponent) : 0.0f;
+      }
+    }
+
+    F3 vp;
+    float attenuation;
+    if (!positional) {
+      vp = vp_inf, attenuation = spot_inf;
+    } else {
+      vp = {pos[0] - vertex[0], pos[1] - vertex[1], pos[2] - vertex[2]};
+      const float d = std::sqrt(dot3(vp, vp));
+      if (d > 1.0e-6f) {
+        const float inv_d = 1.0f / d;
+        for (float& c : vp) c *= inv_d;
+      }
+      attenuation = 1.0f / (float(l.constant_attenuation) +
+                            d * (float(l.linear_attenuation) + d * float(l.quadratic_attenuation)));
+      if (spot) {
+        const float pv_dot_dir = -dot3(vp, spot_dir);
+        if (pv_dot_dir < cos_cutoff) continue;
+        attenuation *= std::pow(pv_dot_dir, exponent);
+      }
+    }
+    if (attenuation < 1e-3f) continue;
+
+    const F3 la = f3(l.ambient), ld = f3(l.diffuse), ls = f3(l.specular);
+    F3 light_amb, light_dif, light_spe;
+    for (size_t k = 0; k < 3; ++k)
+      light_amb[k] = la[k] * mat_amb[k], light_dif[k] = ld[k] * mat_dif[k], light_spe[k] = ls[k] * mat_spe[k];
+    const float n_dot_vp = dot3(normal, vp);
+    if (n_dot_vp < 0) {
+      for (size_t k = 0; k < 3; ++k) diffuse[k] += attenuation * light_amb[k];
+      continue;
+    }
+    F3 contrib = light_amb, spec_contrib{0, 0, 0};
+    for (size_t k = 0; k < 3; ++k) contrib[k] += n_dot_vp * light_dif[k];
+    F3 h;
+    if (model_.local_viewer) {
+      F3 v = vertex;
+      normalize3(v);
+      h = {vp[0] - v[0], vp[1] - v[1], vp[2] - v[2]};
+      normalize3(h);
+    } else if (positional) {
+      h = {vp[0] + eye_z[0], vp[1] + eye_z[1], vp[2] + eye_z[2]};
+      normalize3(h);
+    } else {
+      h = h_inf;
+    }
+    const float n_dot_h = dot3(normal, h);
+    if (n_dot_h > 0) {
+      const float coef = std::pow(n_dot_h, shine);
+      if (coef > 1.0e-10f) {
+        F3& to = model_.separate_specular ? spec_contrib : contrib;
+        for (size_t k = 0; k < 3; ++k) to[k] += coef * light_spe[k];
+      }
+    }
+    for (size_t k = 0; k < 3; ++k) diffuse[k] += attenuation * contrib[k], specular[k] += attenuation * spec_contrib[k];
+  }
+  return {clamp01(diffuse[0]), clamp01(diffuse[1]), clamp01(diffuse[2]), alpha};
+}
+
 void Context::RasterPos(double x, double y, double z, double w) {
   if (!outside_begin_end()) return;
+  flush_stored();  // Mesa: FLUSH_VERTICES and FLUSH_CURRENT first
+  if (precision_ == Precision::Double || spec_) return raster_pos_spec(x, y, z, w);
+  // Mesa (rastpos.c): in float, the modelview and then the projection, one after the other.
+  const float obj[4] = {float(x), float(y), float(z), float(w)};
+  const std::array<float, 4> eye = times_point(glm::value_ptr(modelview_f_.back()), obj);
+  const std::array<float, 4> c = times_point(glm::value_ptr(projection_f_.back()), eye.data());
+  // Clipped as a point against the six planes only: a NaN coordinate compares false and leaves
+  // the position valid, w = 0 at the origin is valid, and an invalid position keeps the last
+  // valid one (measured; GL 2.1 leaves both undefined).
+  if (c[2] < -c[3] || c[2] > c[3] || c[0] > c[3] || c[0] < -c[3] || c[1] > c[3] || c[1] < -c[3]) {
+    raster_pos_.valid = false;
+    return;
+  }
+  raster_pos_.valid = true;
+  const float d = c[3] == 0 ? 1.0f : 1.0f / c[3];  // no divide by a zero w
+  const glm::ivec4 vp = viewport_;
+  const float sx = float(vp[2]) * 0.5f, sy = float(vp[3]) * 0.5f;
+  const float sz = float((depth_range_.y - depth_range_.x) * 0.5), tz = float((depth_range_.y + depth_range_.x) * 0.5);
+  raster_pos_.window = {c[0] * d * sx + (float(vp[0]) + sx), c[1] * d * sy + (float(vp[1]) + sy), c[2] * d * sz + tz,
+                        c[3]};
+  raster_pos_.distance = std::sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
+  raster_pos_.color = lighting_ ? mesa_raster_color(obj) : color_;  // unlit: the current colour, unclamped
+}
+
+// GL 2.1 section 2.13: the raster position is a vertex through the vertex stage, lit as one.
+void Context::raster_pos_spec(double x, double y, double z, double w) {
   update_vertex_constants();
   mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());
   bool zero_normal = false;
   const raster::Vertex v = vertex({x, y, z, w}, normal_, color_, &zero_normal);
   const glm::dvec4& c = v.clip;
-  // Clipped as a point against the six planes only, as Mesa does: a NaN coordinate compares false
-  // and leaves the position valid (all NaN), w = 0 at the origin is valid, and an invalid position
-  // keeps the last valid one (measured; GL 2.1 leaves both undefined).
   raster_pos_.valid = !(c.x > c.w || c.x < -c.w || c.y > c.w || c.y < -c.w || c.z > c.w || c.z < -c.w);
   if (!raster_pos_.valid) return;
   if (std::isnan(c.x) || std::isnan(c.y) || std::isnan(c.z) || std::isnan(c.w)) {
     raster_pos_.window = glm::dvec4(std::numeric_limits<double>::quiet_NaN());
   } else {
-    // In float, as the viewport transform's scale and translate (Mesa: no divide by a zero w).
     const float inv = c.w != 0 ? 1.0f / float(c.w) : 1.0f;
     const glm::ivec4 vp = viewport_;
     const float sx = float(vp[2]) * 0.5f, sy = float(vp[3]) * 0.5f;
@@ -45,7 +250,7 @@ void Context::RasterPos(double x, double y, double z, double w) {
     raster_pos_.window = {float(c.x) * inv * sx + (float(vp[0]) + sx), float(c.y) * inv * sy + (float(vp[1]) + sy),
                           float(c.z) * inv * sz + tz, c.w};
   }
-  raster_pos_.color = lighting_ ? v.front : color_;  // unlit: the current colour, unclamped (Mesa)
+  raster_pos_.color = lighting_ ? v.front : color_;
   const glm::dvec4 eye = to_eye(glm::value_ptr(glm::dvec4(x, y, z, w)), w);
   raster_pos_.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
 }
@@ -98,6 +303,21 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
   if (!outside_begin_end()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (!known_format(format) || !known_type(type)) return error(GL_INVALID_ENUM);
+  if (render_mode_ == GL_FEEDBACK) {
+    // Feedback gets the raster position as a vertex after GL_DRAW_PIXEL_TOKEN (GL 2.1 section 5.3),
+    // its texture coordinates the texture matrix's last column (the current ones are (0, 0, 0, 1)).
+    if (!raster_pos_.valid) return;
+    feedback_put(GL_DRAW_PIXEL_TOKEN);
+    const glm::dvec4& p = raster_pos_.window;
+    feedback_put(p.x), feedback_put(p.y);
+    if (feedback_type_ != GL_2D) feedback_put(p.z);
+    if (feedback_type_ == GL_4D_COLOR_TEXTURE) feedback_put(p.w);
+    if (feedback_type_ != GL_2D && feedback_type_ != GL_3D)
+      for (int k = 0; k < 4; ++k) feedback_put(raster_pos_.color[k]);
+    if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
+      for (int k = 0; k < 4; ++k) feedback_put(texture_f_.back()[3][k]);
+    return;
+  }
   Layout layout;
   if (!color_layout(format, layout) || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {
     static std::set<std::pair<GLenum, GLenum>> said;
