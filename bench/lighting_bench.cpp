@@ -34,20 +34,16 @@ Scene make_scene(int lights, bool point, bool specular) {
   LightParams l[8];
   MaterialParams m[2];
   ModelParams model;
-  Key key;
   for (int i = 0; i < lights; ++i) {
     l[i].enabled = true;
     l[i].diffuse = glm::dvec4(0.8, 0.7, 0.6, 1) / double(lights);
     l[i].ambient = glm::dvec4(0.1, 0.1, 0.1, 1);
     l[i].specular = specular ? glm::dvec4(1) : glm::dvec4(0, 0, 0, 1);
     l[i].position = point ? glm::dvec4(3 * std::cos(i), 4, 5 * std::sin(i + 1), 1) : glm::dvec4(std::cos(i), 1, 1, 0);
-    key.bits |= 1u << i;
-    if (point) key.bits |= 1u << (8 + i);
   }
   m[0].specular = m[1].specular = specular ? glm::dvec4(1) : glm::dvec4(0, 0, 0, 1);
   m[0].shininess = 10;
-  if (specular) key.extra |= 1u << 8;
-  s.prepared = prepare<float>(l, m, model, key);
+  s.prepared = prepare<float>(l, m, model, make_key(l, m, model, false, false));
   return s;
 }
 

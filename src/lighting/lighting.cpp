@@ -228,6 +228,32 @@ unsigned shape_index(const Key& k) {
          unsigned(k.color_material()) << 3 | unsigned(k.separate_specular()) << 4 | kind << 5;
 }
 
+Key make_key(const LightParams (&lights)[8], const MaterialParams (&materials)[2], const ModelParams& model,
+             bool normalize, bool rescale) {
+  Key k;
+  bool specular = false;
+  for (int i = 0; i < 8; ++i) {
+    const LightParams& l = lights[i];
+    if (!l.enabled) continue;
+    const bool local = l.position.w != 0;
+    const bool attenuated =
+        local && (l.constant_attenuation != 1 || l.linear_attenuation != 0 || l.quadratic_attenuation != 0);
+    k.set_light(i, local, l.spot_cutoff != 180, attenuated);
+    for (const MaterialParams& m : materials) specular |= glm::dvec3(l.specular) * glm::dvec3(m.specular) != glm::dvec3(0);
+  }
+  constexpr unsigned kGlSpecular = 0x1202;  // GL_SPECULAR: the tracked colour may bring the term
+  if (model.color_material && model.cm_mode == kGlSpecular) specular = true;
+  k.set(Key::kTwoSide, model.two_side);
+  k.set(Key::kLocalViewer, model.local_viewer);
+  k.set(Key::kSeparateSpecular, model.separate_specular);
+  k.set(Key::kColorMaterial, model.color_material);
+  k.set(Key::kNormalize, normalize);
+  k.set(Key::kRescale, rescale);
+  k.set(Key::kSpecular, specular);
+  k.set(Key::kShininessZero, materials[0].shininess == 0);
+  return k;
+}
+
 template <typename T>
 Kernel<T> specialised(const Key& key) {
   static constexpr auto kernels = table<T>(std::make_integer_sequence<unsigned, 128>());

@@ -92,6 +92,11 @@ template <typename T>
 Kernel<T> generic();
 template <typename T>
 Kernel<T> specialised(const Key& key);
-unsigned shape_index(const Key& key);  // which of the 128 compiled shapes a key selects
+unsigned shape_index(const Key& key);
+// The key's one writer: the terms that exist for these parameters. `model.color_material` means
+// the colour comes per vertex (and `model.cm_mode` what it tracks); normalize and rescale are the
+// GL_NORMALIZE and GL_RESCALE_NORMAL enables. With lighting off the key is Key{}.
+Key make_key(const LightParams (&lights)[8], const MaterialParams (&materials)[2], const ModelParams& model,
+             bool normalize, bool rescale);  // which of the 128 compiled shapes a key selects
 
 }  // namespace ffc::lighting

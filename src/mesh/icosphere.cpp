@@ -49,8 +49,8 @@ std::string icosphere_depth_error(int depth) {
   if (depth >= 0 && depth <= kMaxIcosphereDepth) return "";
   if (depth < 0) return "icosphere depth " + std::to_string(depth) + " is negative (0.." + std::to_string(kMaxIcosphereDepth) + ")";
   return "icosphere depth " + std::to_string(depth) + " is beyond the limit of " + std::to_string(kMaxIcosphereDepth) +
-         ": each level quadruples the triangles and the memory (depth 10: 21 million triangles, about 6 GB; "
-         "depth 11 would need about 24 GB)";
+         ": each level quadruples the triangles and the memory (depth 10: 21 million triangles, 4.6 GB at its peak; "
+         "depth 11 would need about 18 GB)";
 }
 
 Mesh make_icosphere(int depth) {

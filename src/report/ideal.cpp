@@ -66,27 +66,7 @@ LightingState lighting_state(const scene::Description& d) {
   s.model.two_side = d.light_model.two_sided;
   s.model.separate_specular = d.light_model.separate_specular;
   s.model.color_material = false;
-  // The key, bit for bit as state::Context::key() builds it.
-  lighting::Key& k = s.key;
-  bool specular = false;
-  for (int i = 0; i < 8; ++i) {
-    const lighting::LightParams& l = s.lights[i];
-    if (!l.enabled) continue;
-    k.bits |= 1u << i;
-    if (l.position.w != 0) k.bits |= 1u << (8 + i);
-    if (l.spot_cutoff != 180) k.bits |= 1u << (16 + i);
-    if (l.position.w != 0 && (l.constant_attenuation != 1 || l.linear_attenuation != 0 || l.quadratic_attenuation != 0))
-      k.extra |= 1u << i;
-    for (int f = 0; f < 2; ++f)
-      specular |= glm::dvec3(l.specular) * glm::dvec3(s.materials[f].specular) != glm::dvec3(0);
-  }
-  if (s.model.two_side) k.bits |= 1u << 24;
-  if (s.model.local_viewer) k.bits |= 1u << 25;
-  if (s.model.separate_specular) k.bits |= 1u << 26;
-  if (d.normalize) k.bits |= 1u << 28;
-  if (d.rescale_normal) k.bits |= 1u << 29;
-  if (specular) k.extra |= 1u << 8;
-  if (s.materials[0].shininess == 0) k.extra |= 1u << 9;
+  s.key = lighting::make_key(s.lights, s.materials, s.model, d.normalize, d.rescale_normal);
   return s;
 }
 

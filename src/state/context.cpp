@@ -773,38 +773,18 @@ void Context::PointSize(float size) {
 // ---------------------------------------------------------------- vertices
 
 lighting::Key Context::key() const {
-  lighting::Key k;
-  if (!lighting_) return k;
-  bool specular = false;
-  for (int i = 0; i < 8; ++i) {
-    const lighting::LightParams& l = lights_[i];
-    if (!l.enabled) continue;
-    k.bits |= 1u << i;
-    if (l.position.w != 0) k.bits |= 1u << (8 + i);
-    if (l.spot_cutoff != 180) k.bits |= 1u << (16 + i);
-    if (l.position.w != 0 &&
-        (l.constant_attenuation != 1 || l.linear_attenuation != 0 || l.quadratic_attenuation != 0))
-      k.extra |= 1u << i;
-    for (int f = 0; f < 2; ++f)
-      specular |= glm::dvec3(l.specular) * glm::dvec3(materials_[f].specular) != glm::dvec3(0);
-  }
-  const bool cm = cm_per_vertex();
-  if (cm && cm_mode_ == GL_SPECULAR) specular = true;
-  if (model_.two_side) k.bits |= 1u << 24;
-  if (model_.local_viewer) k.bits |= 1u << 25;
-  if (model_.separate_specular) k.bits |= 1u << 26;
-  if (cm) k.bits |= 1u << 27;
-  if (normalize_) k.bits |= 1u << 28;
-  if (rescale_normal_) k.bits |= 1u << 29;
-  if (specular) k.extra |= 1u << 8;
-  if (materials_[0].shininess == 0) k.extra |= 1u << 9;
-  return k;
+  if (!lighting_) return {};
+  lighting::ModelParams m = model_;
+  m.color_material = cm_per_vertex();
+  m.cm_mode = cm_mode_;
+  return lighting::make_key(lights_, materials_, m, normalize_, rescale_normal_);
 }
 
 void Context::prepare_lighting() {
   lighting::ModelParams m = model_;
   m.color_material = cm_per_vertex();
-  const bool any_light = key().bits & 0xFF;
+  const lighting::Key lk = key();
+  const bool any_light = lk.any_light();
   if (any_light && model_.separate_specular)
     deviations_.insert("feedback reports only the primary colour under GL_SEPARATE_SPECULAR_COLOR");
   if (any_light && model_.two_side && m.color_material && cm_face_ != GL_FRONT)
@@ -817,7 +797,6 @@ void Context::prepare_lighting() {
   // takes pow(0, 0) as 0 where n.h <= 0 < n.L.
   const bool face_zero[2] = {materials_[0].shininess == 0, model_.two_side && materials_[1].shininess == 0};
   const bool all_zero = face_zero[0] && (!model_.two_side || face_zero[1]);
-  const lighting::Key lk = key();
   if (all_zero && lk.specular())
     for (int i = 0; i < 8; ++i)
       if (lk.enabled(i) && (lk.spot(i) || lk.attenuated(i)))
@@ -826,7 +805,7 @@ void Context::prepare_lighting() {
   if (any_light && lk.specular() && !all_zero && (face_zero[0] || face_zero[1]))
     deviations_.insert("shininess 0: Mesa's LIT path takes pow(0, 0) as 0 where the spec gives 1");
   // "Constants changed" re-prepares; the kernel for the pipeline's shape comes from the key.
-  const lighting::Key k = key();
+  const lighting::Key& k = lk;
   if (precision_ == Precision::Float) {
     prepared_f_ = lighting::prepare<float>(lights_, materials_, m, k);
     kernel_f_ = lighting::specialised<float>(k);

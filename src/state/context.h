@@ -3,8 +3,9 @@
 // submitted, and the hand-off to the rasterizer or to feedback.
 //
 // Entry points validate first and change nothing on error (they record the first error for
-// glGetError), then apply. Two dirty bits follow Mesa's light.c: `constants_dirty_` (a colour or
-// position changed: re-prepare the constants) and the lighting key (the pipeline's shape).
+// glGetError), then apply. One dirty bit, `constants_dirty_` (a colour, position or enable changed):
+// the constants are prepared again before the next vertex, and with them the lighting key (the
+// pipeline's shape, lighting::make_key), which picks the kernel.
 #pragma once
 #include <GL/gl.h>
 

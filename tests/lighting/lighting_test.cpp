@@ -15,25 +15,7 @@ struct Rig {
   LightParams l[8];
   MaterialParams m[2];
   ModelParams model;
-  // The key the context would build: set from the parameters, so tests cannot disagree with it.
-  Key key() const {
-    Key k;
-    for (int i = 0; i < 8; ++i) {
-      if (!l[i].enabled) continue;
-      k.bits |= 1u << i;
-      if (l[i].position.w != 0) k.bits |= 1u << (8 + i);
-      if (l[i].spot_cutoff != 180) k.bits |= 1u << (16 + i);
-      if (l[i].position.w != 0 && (l[i].constant_attenuation != 1 || l[i].linear_attenuation != 0 ||
-                                   l[i].quadratic_attenuation != 0))
-        k.extra |= 1u << i;
-      for (int f = 0; f < 2; ++f)
-        if (glm::dvec3(l[i].specular) * glm::dvec3(m[f].specular) != glm::dvec3(0)) k.extra |= 1u << 8;
-    }
-    if (model.color_material && model.cm_mode == 0x1202) k.extra |= 1u << 8;
-    k.bits |= unsigned(model.two_side) << 24 | unsigned(model.local_viewer) << 25 |
-              unsigned(model.separate_specular) << 26 | unsigned(model.color_material) << 27;
-    return k;
-  }
+  Key key() const { return make_key(l, m, model, false, false); }  // the context's own writer
   Lit<double> at(glm::dvec4 p, glm::dvec3 n, glm::dvec4 color = glm::dvec4(1)) const {
     return light<double>(prepare<double>(l, m, model, key()), p, n, color);
   }
