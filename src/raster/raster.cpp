@@ -1,4 +1,5 @@
 #include "raster/raster.h"
+#include "raster/reference.h"
 #include "raster/span.h"
 #include "raster/workers.h"
 
@@ -388,6 +389,11 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
 
 void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
                     Workers& workers) {
+  if (reference_rasterizer() && !s.fragment_ops()) {
+    for (size_t i = 0; i < count; ++i)
+      for (const Triangle& t : *lists[i]) draw_reference(fb, t, s);
+    return;
+  }
   size_t total = 0;
   for (size_t i = 0; i < count; ++i) total += lists[i]->size();
   const int bands = std::max(1, std::min(total < 64 ? 1 : workers.size(), (fb.height + kBandRows - 1) / kBandRows));

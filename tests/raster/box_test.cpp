@@ -5,76 +5,12 @@
 // 1 to 3 threads (rows in bands of 64), cut by the framebuffer's edges.
 #include <gtest/gtest.h>
 
-#include <random>
-
-#include "backends/backend.h"
-#include "gl/dispatch.h"
-#include "image/compare.h"
-#include "raster/box.h"
-#include "raster/raster.h"
-#include "state/context.h"
+#include "triangles.h"
 
 namespace ffc {
 namespace {
 
-constexpr int kWidth = 150, kHeight = 141;  // three bands of rows; odd sizes: boxes at the edges
-
-struct Triangles {
-  std::vector<float> xyzw, rgba;
-};
-
-// n triangles, each within `size` pixels: its corners around a random centre (some beyond the
-// framebuffer's edges), depths and w (perspective: colour / w interpolated) random per corner.
-// across_bands: centres within two rows of a band's edge (rows 64 and 128), where two threads
-// share a triangle's rows.
-Triangles random_triangles(int n, float size, unsigned seed, bool across_bands = false) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> u(0, 1);
-  Triangles t;
-  for (int i = 0; i < n; ++i) {
-    const float cx = -8 + u(rng) * (kWidth + 16), z = u(rng) * 1.8f - 0.9f;
-    const float cy = across_bands ? (i % 2 ? 64 : 128) + 4 * (u(rng) - 0.5f) : -8 + u(rng) * (kHeight + 16);
-    for (int k = 0; k < 3; ++k) {
-      const float w = 0.5f + 2 * u(rng);
-      const float x = cx + (u(rng) - 0.5f) * size, y = cy + (u(rng) - 0.5f) * size;
-      // Window (x, y) from clip coordinates over the whole framebuffer, times w.
-      t.xyzw.insert(t.xyzw.end(), {(2 * x / kWidth - 1) * w, (2 * y / kHeight - 1) * w, (z + 0.1f * (u(rng) - 0.5f)) * w, w});
-      t.rgba.insert(t.rgba.end(), {u(rng), u(rng), u(rng), u(rng)});
-    }
-  }
-  return t;
-}
-
-struct Drawn {
-  image::Image picture;
-  std::vector<uint32_t> depth;  // the depth buffer as drawn: rounding shows here before in colour
-};
-
-Drawn draw(const Triangles& t, GLenum depth_func, int threads, bool wide, bool lists) {
-  raster::detail::set_wide_kernels(wide);
-  auto soft = backends::make("soft");
-  soft->begin(kWidth, kHeight);
-  state::Context::current()->set_threads(threads);
-  state::Context::current()->set_triangle_lists(lists);
-  glClearColor(0.1f, 0.2f, 0.3f, 1);
-  glClearDepth(0.5);  // GL_GREATER and friends draw too
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (depth_func == 0) {  // no depth test: primitive order alone decides
-    glDisable(GL_DEPTH_TEST);
-  } else {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth_func);
-  }
-  glShadeModel(GL_SMOOTH);
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glVertexPointer(4, GL_FLOAT, 0, t.xyzw.data());
-  glColorPointer(4, GL_FLOAT, 0, t.rgba.data());
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(t.xyzw.size() / 4));
-  Drawn out{soft->read(), state::Context::current()->framebuffer().depth};
-  raster::detail::set_wide_kernels(true);
-  return out;
-}
+using namespace raster_test;
 
 class BoxKernel : public ::testing::TestWithParam<GLenum> {
  protected:
