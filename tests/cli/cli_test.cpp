@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "../temp_dir.h"
 #include "image/image.h"
 
 namespace {
@@ -31,11 +32,7 @@ Result ffcompat(const std::string& args, const std::string& env = "") {
   return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
-fs::path tmp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "ffcompat_cli_test";
-  fs::create_directories(d);
-  return d / name;
-}
+fs::path tmp(const std::string& name) { return ffc::test::temp_path(name); }
 
 TEST(Cli, NormalsJsonIsTheSeedsSmoothTable) {
   const Result r = ffcompat("normals --scene cube --normals average --json");
@@ -102,10 +99,10 @@ TEST(Cli, ShadingWritesFourPicturesASheetAndThreeComparisons) {
 }
 
 TEST(Cli, BadInputIsAnErrorNotACrash) {
-  EXPECT_EQ(ffcompat("render --scene teapot --out /tmp/x.png").status, 1);
-  EXPECT_EQ(ffcompat("render --scene cube --shade phong --out /tmp/x.png").status, 1);
-  EXPECT_EQ(ffcompat("render --scene cube --size 10by10 --out /tmp/x.png").status, 1);
-  EXPECT_EQ(ffcompat("render --scene icosphere --depth 40 --out /tmp/x.png").status, 1);
+  EXPECT_EQ(ffcompat("render --scene teapot --out " + tmp("x.png").string()).status, 1);
+  EXPECT_EQ(ffcompat("render --scene cube --shade phong --out " + tmp("x.png").string()).status, 1);
+  EXPECT_EQ(ffcompat("render --scene cube --size 10by10 --out " + tmp("x.png").string()).status, 1);
+  EXPECT_EQ(ffcompat("render --scene icosphere --depth 40 --out " + tmp("x.png").string()).status, 1);
   EXPECT_EQ(ffcompat("compare /nonexistent/a.png /nonexistent/b.png").status, 1);
   EXPECT_EQ(ffcompat("frobnicate").status, 1);
 }
@@ -133,8 +130,8 @@ TEST(Cli, OptionsACommandDoesNotUseAreRefusedNamingWhatApplies) {
   expect_refused("check --scene cube --backend soft", "there is no backend to choose");
   expect_refused("bench --scene cube --frames 1 --backend soft", "bench takes --backends");
   expect_refused("bench --scene cube --frames 1 --backends mesa,glsl", "unknown backend 'glsl' (mesa, soft, soft-double)");
-  expect_refused("render --scene icosphere --cam-angle 30 --out /tmp/x.png", "the built-in icosphere's camera is fixed");
-  expect_refused("render --scene cube --backend glsl --out /tmp/x.png", "glsl");
+  expect_refused("render --scene icosphere --cam-angle 30 --out " + tmp("x.png").string(), "the built-in icosphere's camera is fixed");
+  expect_refused("render --scene cube --backend glsl --out " + tmp("x.png").string(), "glsl");
   expect_refused("check --level vertex --scene cube --max-diff 3", "--max-diff and --out apply to --level pixel");
   expect_refused("check --level pixel --scene cube --tolerance 1", "--tolerance applies to --level vertex");
 }
@@ -158,16 +155,17 @@ TEST(Cli, AMistypedCommandNamesTheKnownOnes) {
 TEST(Cli, ParseErrorsExitWithOneNotCli11sCodes) {
   // CLI11 gave 105 to 109 for these; every usage error is 1 now.
   EXPECT_EQ(ffcompat("render --scene cube").status, 1);                          // --out missing
-  EXPECT_EQ(ffcompat("render --scene cube --out /tmp/x.png --frobnicate").status, 1);  // unknown option
-  EXPECT_EQ(ffcompat("render --scene cube --depth three --out /tmp/x.png").status, 1);  // not a number
-  EXPECT_EQ(ffcompat("render --scene cube --out /tmp/x.png extra").status, 1);   // extra argument
+  EXPECT_EQ(ffcompat("render --scene cube --out " + tmp("x.png").string() + " --frobnicate").status, 1);  // unknown option
+  EXPECT_EQ(ffcompat("render --scene cube --depth three --out " + tmp("x.png").string()).status, 1);  // not a number
+  EXPECT_EQ(ffcompat("render --scene cube --out " + tmp("x.png").string() + " extra").status, 1);   // extra argument
   EXPECT_EQ(ffcompat("--help").status, 0);
 }
 
 TEST(Cli, IcosphereDepthBeyondTheMemoryLimitIsRefusedAtOnceSayingWhy) {
   // Depths 11 and 12 passed validation and died of bad_alloc after half a minute.
-  for (const char* cmd : {"render --scene icosphere --depth 11 --out /tmp/x.png", "normals --scene icosphere --depth 12",
-                          "check --scene icosphere --depth 11"}) {
+  for (const std::string& cmd : {"render --scene icosphere --depth 11 --out " + tmp("x.png").string(),
+                                 std::string("normals --scene icosphere --depth 12"),
+                                 std::string("check --scene icosphere --depth 11")}) {
     SCOPED_TRACE(cmd);
     const auto t0 = std::chrono::steady_clock::now();
     const Result r = ffcompat_err(cmd);
@@ -185,7 +183,7 @@ TEST(Cli, ASceneFileThatIsAFifoOrADeviceIsRefusedNamingIt) {
   fs::create_symlink("/dev/zero", zero);
   for (const fs::path& p : {fifo, zero}) {
     // (ffcompat_err runs under `timeout`): before the fix the FIFO blocked forever and /dev/zero read until memory ran out.
-    const Result r = ffcompat_err("render --scene " + p.string() + " --out /tmp/x.png");
+    const Result r = ffcompat_err("render --scene " + p.string() + " --out " + tmp("x.png").string());
     EXPECT_EQ(r.status, 1) << p;
     EXPECT_NE(r.out.find(p.string() + ": is not a regular file"), std::string::npos) << r.out;
   }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../temp_dir.h"
 #include "image/image.h"
 
 namespace {
@@ -23,11 +24,7 @@ struct Outcome {
   std::string out, err;
 };
 
-fs::path tmp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "ffcompat_cli_scene_test";
-  fs::create_directories(d);
-  return d / name;
-}
+fs::path tmp(const std::string& name) { return ffc::test::temp_path(name); }
 
 // Runs ffcompat in the repository root, so scene paths are the ones a user types.
 Outcome run(const std::string& args) {

@@ -1,3 +1,4 @@
+#include "../temp_dir.h"
 #include "image/compare.h"
 
 #include <gtest/gtest.h>
@@ -69,7 +70,7 @@ TEST(HeatMap, BlackWhereEqualBlueForOneStepYellowWhenSaturated) {
 TEST(Png, RoundTripsExactly) {
   Image a(5, 4);
   for (size_t i = 0; i < a.rgba.size(); ++i) a.rgba[i] = uint8_t(i * 37);
-  const std::string path = (std::filesystem::temp_directory_path() / "ffcompat_roundtrip.png").string();
+  const std::string path = test::temp_path("roundtrip.png").string();
   write_png(path, a);
   const Image b = read_png(path);
   EXPECT_EQ(b.width, 5);
@@ -79,7 +80,7 @@ TEST(Png, RoundTripsExactly) {
 }
 
 TEST(Png, BadFilesNameThemselves) {
-  const std::string path = (std::filesystem::temp_directory_path() / "ffcompat_not_a.png").string();
+  const std::string path = test::temp_path("not_a.png").string();
   std::ofstream(path) << "this is not a PNG";
   try {
     read_png(path);

@@ -1,5 +1,6 @@
 // `ffcompat report --quick`: the CSV's columns and rows, a well-formed SVG, an HTML page whose
 // pictures exist; through the library and through the command line.
+#include "../temp_dir.h"
 #include "report/report.h"
 
 #include <gtest/gtest.h>
@@ -19,9 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("ffcompat_report_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(p);
+fs::path temp_dir(const std::string& name) {  // this run's own (tests/temp_dir.h)
+  const fs::path p = test::temp_path(name);
   fs::create_directories(p);
   return p;
 }

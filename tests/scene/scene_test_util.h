@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "../temp_dir.h"
 #include "image/image.h"
 
 namespace ffc::scene_test {
@@ -15,16 +16,8 @@ namespace fs = std::filesystem;
 // The repository's scenes/ folder, found from this file's own path.
 inline fs::path scenes_dir() { return fs::path(__FILE__).parent_path().parent_path().parent_path() / "scenes"; }
 
-// A fresh folder per test binary run, under the system's temporary folder.
-inline fs::path temp_dir() {
-  static const fs::path d = [] {
-    const fs::path p = fs::temp_directory_path() / ("ffcompat_scene_test_" + std::to_string(::getpid()));
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-  }();
-  return d;
-}
+// This test binary run's own folder (tests/temp_dir.h).
+inline fs::path temp_dir() { return test::temp_path(""); }
 
 inline fs::path write_file(const std::string& name, const std::string& text) {
   const fs::path p = temp_dir() / name;
