@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "lighting/lighting.h"
+#include "state/float_matrix.h"
 #include "raster/raster.h"
 #include "raster/triangle_list.h"
 
@@ -168,8 +169,14 @@ class Context {
   std::vector<glm::dmat4>& stack();
   // The modelview as this context's precision keeps it: lights, normals and glGet read this one.
   glm::dmat4 modelview() const;
+  glm::dmat4 projection() const;
+  glm::dmat4 texture() const;
+  glm::dvec3 direction_to_eye(const double* v);
   glm::dvec4 to_eye(const double* v, double w) const;
-  std::vector<glm::mat4>& stack_f();
+  std::vector<fmat::Matrix>& stack_f();
+  // What Mesa's state validation does to the matrices (draws, glRasterPos, glReadPixels,
+  // glDrawPixels): the modelview and texture matrices analysed, the float MVP recomputed.
+  void validate_matrices();
   void set_light(int i, GLenum pname, const double* v);
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
   void fetch_vertex(GLint i, Fixed f);  // from the enabled client arrays, as glArrayElement
@@ -238,13 +245,14 @@ class Context {
   GLenum matrix_mode_ = GL_MODELVIEW;
   std::vector<glm::dmat4> modelview_{glm::dmat4(1)}, projection_{glm::dmat4(1)};
   // The same stacks in float, computed as Mesa computes them (see float_matrix.h).
-  std::vector<glm::mat4> modelview_f_{glm::mat4(1)}, projection_f_{glm::mat4(1)};
+  // Each entry keeps Mesa's flags, type and inverse beside its values (fmat::Matrix).
+  std::vector<fmat::Matrix> modelview_f_{fmat::Matrix()}, projection_f_{fmat::Matrix()};
   glm::mat4 mvp_f_{1.0f};  // projection x modelview in float, refreshed as each primitive begins
   static constexpr GLint kMaxViewport = 16384;  // GL_MAX_VIEWPORT_DIMS, as llvmpipe's
   static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for the modelview and projection stacks
   static constexpr size_t kMaxTextureStackDepth = 10;
   std::vector<glm::dmat4> texture_{glm::dmat4(1)};
-  std::vector<glm::mat4> texture_f_{glm::mat4(1)};
+  std::vector<fmat::Matrix> texture_f_{fmat::Matrix()};
   glm::ivec4 viewport_;
   glm::dvec2 depth_range_{0, 1};
   glm::vec4 clear_color_{0, 0, 0, 0};

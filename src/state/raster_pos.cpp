@@ -25,7 +25,7 @@ namespace ffc::state {
 void Context::RasterPos(double x, double y, double z, double w) {
   if (!outside_begin_end()) return;
   update_vertex_constants();
-  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());
+  validate_matrices();
   bool zero_normal = false;
   const raster::Vertex v = vertex({x, y, z, w}, normal_, color_, &zero_normal);
   const glm::dvec4& c = v.clip;
@@ -96,6 +96,7 @@ bool known_type(GLenum t) {
 
 void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
   if (!outside_begin_end()) return;
+  validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (!known_format(format) || !known_type(type)) return error(GL_INVALID_ENUM);
   Layout layout;
