@@ -11,6 +11,7 @@
 #include <random>
 
 #include "harness.h"
+#include "state/float_matrix.h"
 
 namespace ffc::state_test {
 namespace {
@@ -257,6 +258,62 @@ std::vector<Case> generated(int count) {
 class MatrixSequences : public ::testing::TestWithParam<Case> {};
 TEST_P(MatrixSequences, MatchMesaExactly) { check_exactly(GetParam()); }
 INSTANTIATE_TEST_SUITE_P(Generated, MatrixSequences, ::testing::ValuesIn(generated(400)), case_name);
+
+// ---------------------------------------------------------------- the inverse, for its users
+
+// M^-1 M within float rounding of the identity.
+void expect_inverts(state::fmat::Matrix m, const char* what) {
+  const glm::mat4 p = m.inverse() * m.values();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(p[c][r], c == r ? 1.0f : 0.0f, 1e-5f) << what << " [" << c << "][" << r << "]";
+}
+
+TEST(MatrixInverse, ByType) {
+  using state::fmat::Matrix;
+  using state::fmat::Type;
+  Matrix rigid;
+  rigid.translate(1, -2, 3), rigid.rotate(30, 1, 1, 0);
+  rigid.analyse();
+  EXPECT_EQ(rigid.type(), Type::Affine);
+  EXPECT_TRUE(rigid.length_preserving());
+  expect_inverts(rigid, "rotation and translation");
+
+  Matrix uniform = rigid;
+  uniform.scale(2, 2, 2);
+  uniform.analyse();
+  EXPECT_FALSE(uniform.length_preserving());
+  expect_inverts(uniform, "uniform scale");
+
+  Matrix skew = rigid;
+  skew.scale(2, 0.5f, 1.5f);
+  expect_inverts(skew, "general scale");
+
+  Matrix no_rot;
+  no_rot.translate(4, 5, 6), no_rot.scale(2, 3, 4);
+  no_rot.analyse();
+  EXPECT_EQ(no_rot.type(), Type::NoRot3D);
+  expect_inverts(no_rot, "scale and translation");
+
+  Matrix persp;
+  persp.frustum(-1, 1, -1, 1, 1, 10);
+  persp.analyse();
+  EXPECT_EQ(persp.type(), Type::Perspective);
+  expect_inverts(persp, "frustum");
+
+  // Values loaded are looked at when analysed: a rotation's values give the rotation flag back.
+  Matrix loaded;
+  loaded.load(rigid.values());
+  loaded.analyse();
+  EXPECT_EQ(loaded.type(), Type::Affine);
+  EXPECT_TRUE(loaded.length_preserving());
+
+  // A singular matrix: flagged, and its inverse is the identity (as Mesa leaves it).
+  Matrix flat;
+  flat.scale(0, 1, 1);
+  flat.analyse();
+  EXPECT_NE(flat.flags() & state::fmat::kSingular, 0u);
+  EXPECT_EQ(flat.inverse(), glm::mat4(1.0f));
+}
 
 }  // namespace
 }  // namespace ffc::state_test
