@@ -2,6 +2,7 @@
 // file), removed with everything in it when the tests end. Tests write nowhere else.
 #pragma once
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -13,12 +14,14 @@ namespace ffc::test {
 inline std::filesystem::path temp_path(const std::string& name) {
   struct Dir {
     std::filesystem::path path;
+    pid_t owner = getpid();  // a forked child (a death test) must not remove its parent's folder
     Dir() {
       std::string t = (std::filesystem::temp_directory_path() / "ffcompat_test.XXXXXX").string();
       if (!mkdtemp(t.data())) throw std::runtime_error("mkdtemp failed in " + t);
       path = t;
     }
     ~Dir() {
+      if (getpid() != owner) return;
       std::error_code ignored;
       std::filesystem::remove_all(path, ignored);
     }

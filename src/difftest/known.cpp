@@ -114,6 +114,8 @@ const std::vector<KnownDeviation>& known_deviations() {
             "shininess 0 with an attenuated or spot light: Mesa's LIT path raises n.L to the power n.L "
             "for the specular factor where the spec gives 1"),
       drawn("zero-normal-normalize", state::kZeroNormal),
+      drawn("soft-drawpixels-nonfinite-position", state::kNonfiniteDrawPixels),
+      drawn("soft-texgen-not-modelled", state::kTexGen),
   };
   return v;
 }

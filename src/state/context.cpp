@@ -190,8 +190,15 @@ void Context::set_client_state(GLenum array, bool on) {
 
 // ---------------------------------------------------------------- lights and materials
 
+glm::dmat4 Context::projection() const {
+  return precision_ == Precision::Float ? glm::dmat4(projection_f_.back().values()) : projection_.back();
+}
+glm::dmat4 Context::texture() const {
+  return precision_ == Precision::Float ? glm::dmat4(texture_f_.back().values()) : texture_.back();
+}
+
 glm::dmat4 Context::modelview() const {
-  return precision_ == Precision::Float ? glm::dmat4(modelview_f_.back()) : modelview_.back();
+  return precision_ == Precision::Float ? glm::dmat4(modelview_f_.back().values()) : modelview_.back();
 }
 
 // The position and the spot direction are transformed by the modelview as it is when they are
@@ -199,7 +206,21 @@ glm::dmat4 Context::modelview() const {
 // matrix), so that a light moves exactly as the geometry drawn under the same matrix.
 glm::dvec4 Context::to_eye(const double* v, double w) const {
   if (precision_ == Precision::Double) return modelview_.back() * glm::dvec4(v[0], v[1], v[2], w);
-  return glm::dvec4(fmat::transform(modelview_f_.back(), glm::vec4(float(v[0]), float(v[1]), float(v[2]), float(w))));
+  return glm::dvec4(fmat::transform(modelview_f_.back().values(), glm::vec4(float(v[0]), float(v[1]), float(v[2]), float(w))));
+}
+
+// A spot direction is transformed by the modelview's upper 3x3 only (Mesa's TRANSFORM_DIRECTION,
+// each sum left to right), so an infinite translation does not make it NaN; Mesa analyses the
+// modelview first, as glPushMatrix does.
+glm::dvec3 Context::direction_to_eye(const double* v) {
+  if (precision_ == Precision::Double) return glm::dmat3(modelview_.back()) * glm::dvec3(v[0], v[1], v[2]);
+  fmat::Matrix& mv = modelview_f_.back();
+  if (mv.dirty()) mv.analyse();
+  const glm::mat4& m = mv.values();
+  const float x = float(v[0]), y = float(v[1]), z = float(v[2]);
+  glm::dvec3 out;
+  for (int i = 0; i < 3; ++i) out[i] = x * m[0][i] + y * m[1][i] + z * m[2][i];
+  return out;
 }
 
 void Context::set_light(int i, GLenum pname, const double* v) {
@@ -209,7 +230,7 @@ void Context::set_light(int i, GLenum pname, const double* v) {
     case GL_DIFFUSE: l.diffuse = glm::make_vec4(v); break;
     case GL_SPECULAR: l.specular = glm::make_vec4(v); break;
     case GL_POSITION: l.position = to_eye(v, v[3]); break;
-    case GL_SPOT_DIRECTION: l.spot_direction = glm::dvec3(to_eye(v, 0)); break;
+    case GL_SPOT_DIRECTION: l.spot_direction = direction_to_eye(v); break;
     case GL_SPOT_EXPONENT: l.spot_exponent = v[0]; break;
     case GL_SPOT_CUTOFF: l.spot_cutoff = v[0]; break;
     case GL_CONSTANT_ATTENUATION: l.constant_attenuation = v[0]; break;
@@ -508,7 +529,6 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
   normalized = kRound;
   if (!outside_begin_end()) return 0;
   int n = 0;
-  const bool float_ = precision_ == Precision::Float;
   auto vec4 = [&](const glm::dvec4& c, bool color) {
     for (int k = 0; k < 4; ++k) out[k] = c[k];
     n = 4, normalized = color ? kFromFloat : kRound;
@@ -525,8 +545,8 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
   switch (pname) {
     // The float context reports its float matrices, as Mesa does: the ones it draws with.
     case GL_MODELVIEW_MATRIX: mat(modelview()); break;
-    case GL_TEXTURE_MATRIX: mat(float_ ? glm::dmat4(texture_f_.back()) : texture_.back()); break;
-    case GL_PROJECTION_MATRIX: mat(float_ ? glm::dmat4(projection_f_.back()) : projection_.back()); break;
+    case GL_TEXTURE_MATRIX: mat(texture()); break;
+    case GL_PROJECTION_MATRIX: mat(projection()); break;
     case GL_MODELVIEW_STACK_DEPTH: FFC_GET(double(modelview_.size())); break;
     case GL_PROJECTION_STACK_DEPTH: FFC_GET(double(projection_.size())); break;
     case GL_MAX_MODELVIEW_STACK_DEPTH: case GL_MAX_PROJECTION_STACK_DEPTH: FFC_GET(double(kMaxStackDepth)); break;
@@ -633,7 +653,7 @@ void Context::GetIntegerv(GLenum pname, GLint* out) {
 std::vector<glm::dmat4>& Context::stack() {
   return matrix_mode_ == GL_PROJECTION ? projection_ : matrix_mode_ == GL_TEXTURE ? texture_ : modelview_;
 }
-std::vector<glm::mat4>& Context::stack_f() {
+std::vector<fmat::Matrix>& Context::stack_f() {
   return matrix_mode_ == GL_PROJECTION ? projection_f_ : matrix_mode_ == GL_TEXTURE ? texture_f_ : modelview_f_;
 }
 
@@ -644,18 +664,29 @@ void Context::MatrixMode(GLenum mode) {
   matrix_mode_ = mode;
 }
 
-void Context::LoadIdentity() { LoadMatrix(glm::dmat4(1)); }
+void Context::LoadIdentity() {
+  if (!outside_begin_end()) return;
+  stack().back() = glm::dmat4(1);
+  stack_f().back().load_identity();
+}
 
 void Context::LoadMatrix(const glm::dmat4& m) {
   if (!outside_begin_end()) return;
   stack().back() = m;
-  stack_f().back() = glm::mat4(m);
+  stack_f().back().load(glm::mat4(m));
 }
 
 void Context::MultMatrix(const glm::dmat4& m) {
   if (!outside_begin_end()) return;
   stack().back() = stack().back() * m;
-  stack_f().back() = fmat::mul(stack_f().back(), glm::mat4(m));
+  stack_f().back().multiply(glm::mat4(m));
+}
+
+void Context::validate_matrices() {
+  modelview_f_.back().analyse();
+  texture_f_.back().analyse();
+  // Mesa's _ModelProjectMatrix, with the flags of both (three rows when both are affine).
+  mvp_f_ = fmat::Matrix::product(projection_f_.back(), modelview_f_.back()).values();
 }
 
 void Context::PushMatrix() {
@@ -664,7 +695,9 @@ void Context::PushMatrix() {
   if (s.size() >= (matrix_mode_ == GL_TEXTURE ? kMaxTextureStackDepth : kMaxStackDepth))
     return error(GL_STACK_OVERFLOW);
   s.push_back(s.back());
-  stack_f().push_back(stack_f().back());
+  auto& f = stack_f();
+  f.back().analyse();  // Mesa makes the pushed matrix current first (_math_matrix_push_copy)
+  f.push_back(f.back());
 }
 
 void Context::PopMatrix() {
@@ -682,34 +715,36 @@ void Context::Rotate(double angle, double x, double y, double z) {
   // m_matrix.c rule, which GL 2.1 leaves open: the rotation of a zero axis is undefined).
   const double len = std::sqrt(x * x + y * y + z * z);
   if (len > 1e-4) stack().back() *= glm::rotate(glm::dmat4(1), glm::radians(angle), glm::dvec3(x, y, z) / len);
-  stack_f().back() = fmat::mul(stack_f().back(), fmat::rotation(float(angle), float(x), float(y), float(z)));
+  stack_f().back().rotate(float(angle), float(x), float(y), float(z));
 }
 
 void Context::Scale(double x, double y, double z) {
   if (!outside_begin_end()) return;
   stack().back() *= glm::scale(glm::dmat4(1), glm::dvec3(x, y, z));
-  fmat::scale(stack_f().back(), float(x), float(y), float(z));
+  stack_f().back().scale(float(x), float(y), float(z));
 }
 
 void Context::Translate(double x, double y, double z) {
   if (!outside_begin_end()) return;
   stack().back() *= glm::translate(glm::dmat4(1), glm::dvec3(x, y, z));
-  fmat::translate(stack_f().back(), float(x), float(y), float(z));
+  stack_f().back().translate(float(x), float(y), float(z));
 }
 
 void Context::Ortho(double l, double r, double b, double t, double n, double f) {
   if (!outside_begin_end()) return;
-  if (l == r || b == t || n == f) return error(GL_INVALID_VALUE);
+  // Mesa checks the arguments once converted to float (so 1 and 1 + 1e-10 are equal there).
+  const float fl = float(l), fr = float(r), fb = float(b), ft = float(t), fn = float(n), ff = float(f);
+  if (fl == fr || fb == ft || fn == ff) return error(GL_INVALID_VALUE);
   stack().back() *= glm::orthoRH_NO(l, r, b, t, n, f);
-  stack_f().back() = fmat::mul(stack_f().back(), fmat::ortho(float(l), float(r), float(b), float(t), float(n), float(f)));
+  stack_f().back().ortho(fl, fr, fb, ft, fn, ff);
 }
 
 void Context::Frustum(double l, double r, double b, double t, double n, double f) {
   if (!outside_begin_end()) return;
-  if (n <= 0 || f <= 0 || l == r || b == t || n == f) return error(GL_INVALID_VALUE);
+  const float fl = float(l), fr = float(r), fb = float(b), ft = float(t), fn = float(n), ff = float(f);
+  if (fn <= 0 || ff <= 0 || fl == fr || fb == ft || fn == ff) return error(GL_INVALID_VALUE);
   stack().back() *= glm::frustumRH_NO(l, r, b, t, n, f);
-  stack_f().back() =
-      fmat::mul(stack_f().back(), fmat::frustum(float(l), float(r), float(b), float(t), float(n), float(f)));
+  stack_f().back().frustum(fl, fr, fb, ft, fn, ff);
 }
 
 void Context::Viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
@@ -870,7 +905,7 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
   if (precision_ == Precision::Float) {  // positions rounded as Mesa rounds them
     const glm::vec4 of(obj);
     v.clip = fmat::transform(mvp_f_, of);
-    eye = fmat::transform(modelview_f_.back(), of);
+    eye = fmat::transform(modelview_f_.back().values(), of);
   } else {
     eye = modelview_.back() * obj;
     v.clip = projection_.back() * eye;
@@ -964,6 +999,7 @@ void Context::Vertex(double x, double y, double z, double w) {
 
 void Context::Begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
+  validate_matrices();  // Mesa validates its state before it checks the mode
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   flush_stored();
   set_color_varies(false);
@@ -971,7 +1007,6 @@ void Context::Begin(GLenum mode) {
   in_begin_ = true;
   prim_mode_ = mode;
   verts_.clear();
-  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
   // Triangles in immediate mode take the triangle-list path: the vertices are kept as sent and
   // lit together at glEnd, unless a glMaterial between them changes the lighting (undefer()).
   deferred_ = shaded_path(mode);
@@ -1114,6 +1149,7 @@ bool Context::fits_in_memory(uint64_t n) {
 // then the index type.
 void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   if (!outside_begin_end()) return;
+  validate_matrices();  // before any argument is checked, as Mesa's draws
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
@@ -1122,7 +1158,6 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
-  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
   if (shaded_path(mode)) {
     shade_range(first, count);
     return draw_shaded(nullptr, size_t(count) / 3);
@@ -1138,6 +1173,7 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
 
 void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
   if (!outside_begin_end()) return;
+  validate_matrices();  // before any argument is checked, as Mesa's draws
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
@@ -1145,7 +1181,6 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
-  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());  // Mesa's _ModelProjectMatrix
   // Each array element in the indices' range is transformed and lit once, however often the
   // indices name it (a post-transform cache covering the whole draw).
   const uint8_t* p = static_cast<const uint8_t*>(indices);
@@ -1197,6 +1232,9 @@ void Context::flush_primitive() {
   tris.clear();
 
   auto put = [&](double x) { feedback_put(x); };
+  if (feedback && (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE))
+    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
+      if (enabled_state(gen) == 1) deviations_.insert(kTexGen);
   // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it
   // (emit_poly in draw_pipe_clip.c): a fan of triangles (v[i], v[i+1], v[0]), the first vertex
   // last, also when the clipped polygon is a triangle.
@@ -1448,6 +1486,7 @@ void Context::PixelStorei(GLenum pname, GLint param) {
 
 void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
   if (!outside_begin_end()) return;
+  validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);  // Mesa checks the size before the format
   if (const GLenum e = read_pixels_error(format, type)) return error(e);
   flush_clear();

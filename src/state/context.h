@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lighting/lighting.h"
+#include "state/float_matrix.h"
 #include "raster/raster.h"
 #include "raster/triangle_list.h"
 
@@ -26,6 +27,11 @@ namespace ffc::state {
 enum class Precision { Float, Double };
 
 inline constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
+// Not modelled, reported when met: what Mesa does there is not soft's picture or feedback.
+inline constexpr const char* kNonfiniteDrawPixels =
+    "glDrawPixels at a raster position that is not finite: soft draws nothing, Mesa draws at a place of its own";
+inline constexpr const char* kTexGen =
+    "texture coordinate generation (GL_TEXTURE_GEN_*) is not modelled: fed-back texture coordinates are the current ones";
 
 // How integer normals and colours map to [-1, 1] or [0, 1] (unsigned: c / (2^b - 1) in every rule).
 //   Raw:      not at all (positions, indices);
@@ -169,8 +175,14 @@ class Context {
   std::vector<glm::dmat4>& stack();
   // The modelview as this context's precision keeps it: lights, normals and glGet read this one.
   glm::dmat4 modelview() const;
+  glm::dmat4 projection() const;
+  glm::dmat4 texture() const;
+  glm::dvec3 direction_to_eye(const double* v);
   glm::dvec4 to_eye(const double* v, double w) const;
-  std::vector<glm::mat4>& stack_f();
+  std::vector<fmat::Matrix>& stack_f();
+  // What Mesa's state validation does to the matrices (draws, glRasterPos, glReadPixels,
+  // glDrawPixels): the modelview and texture matrices analysed, the float MVP recomputed.
+  void validate_matrices();
   void set_light(int i, GLenum pname, const double* v);
   bool set_material(GLenum face, GLenum pname, const double* v);  // false: error recorded
   void fetch_vertex(GLint i, Fixed f);  // from the enabled client arrays, as glArrayElement
@@ -178,7 +190,7 @@ class Context {
   Fixed draw_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::Gl42; }
   Fixed element_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::MesaCall; }
   void process_vertex(const glm::dvec4& obj);
-  glm::dvec4 mesa_raster_color(const float obj[4]) const;  // raster_pos.cpp
+  glm::dvec4 mesa_raster_color(const float obj[4]);  // raster_pos.cpp
   void raster_pos_spec(double x, double y, double z, double w);
   void undefer();  // immediate-mode vertices kept for glEnd: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
@@ -241,13 +253,14 @@ class Context {
   GLenum matrix_mode_ = GL_MODELVIEW;
   std::vector<glm::dmat4> modelview_{glm::dmat4(1)}, projection_{glm::dmat4(1)};
   // The same stacks in float, computed as Mesa computes them (see float_matrix.h).
-  std::vector<glm::mat4> modelview_f_{glm::mat4(1)}, projection_f_{glm::mat4(1)};
+  // Each entry keeps Mesa's flags, type and inverse beside its values (fmat::Matrix).
+  std::vector<fmat::Matrix> modelview_f_{fmat::Matrix()}, projection_f_{fmat::Matrix()};
   glm::mat4 mvp_f_{1.0f};  // projection x modelview in float, refreshed as each primitive begins
   static constexpr GLint kMaxViewport = 16384;  // GL_MAX_VIEWPORT_DIMS, as llvmpipe's
   static constexpr size_t kMaxStackDepth = 32;  // Mesa's, for the modelview and projection stacks
   static constexpr size_t kMaxTextureStackDepth = 10;
   std::vector<glm::dmat4> texture_{glm::dmat4(1)};
-  std::vector<glm::mat4> texture_f_{glm::mat4(1)};
+  std::vector<fmat::Matrix> texture_f_{fmat::Matrix()};
   glm::ivec4 viewport_;
   glm::dvec2 depth_range_{0, 1};
   glm::vec4 clear_color_{0, 0, 0, 0};

@@ -232,9 +232,9 @@ int Context::get_table_values(GLenum pname, GLdouble* out, int& normalized) {
     return 16;
   };
   switch (pname) {
-    case GL_TRANSPOSE_MODELVIEW_MATRIX: return transposed(modelview_.back());
-    case GL_TRANSPOSE_PROJECTION_MATRIX: return transposed(projection_.back());
-    case GL_TRANSPOSE_TEXTURE_MATRIX: return transposed(texture_.back());
+    case GL_TRANSPOSE_MODELVIEW_MATRIX: return transposed(modelview());
+    case GL_TRANSPOSE_PROJECTION_MATRIX: return transposed(projection());
+    case GL_TRANSPOSE_TEXTURE_MATRIX: return transposed(texture());
     case GL_SCISSOR_BOX:
       // No glScissor here: the box stays where Mesa puts it when the context is first made
       // current, the whole window (GL 2.1 section 4.1.2).

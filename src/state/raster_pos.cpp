@@ -47,40 +47,7 @@ std::array<float, 4> times_point(const float* m, const float* p) {  // TRANSFORM
   return q;
 }
 F3 f3(const glm::dvec4& v) { return {float(v.x), float(v.y), float(v.z)}; }
-float clamp01(float x) { return x < 0 ? 0 : (x > 1 ? 1 : x); }  // a NaN stays NaN (Mesa's CLAMP)
-
-// Whether Mesa's math module would call this modelview length-preserving (a rotation and a
-// translation at most), judged from the values as its analyse_from_scratch judges them.
-bool length_preserving(const glm::mat4& m4) {
-  const float* m = glm::value_ptr(m4);
-  if (m[3] != 0 || m[7] != 0 || m[11] != 0 || m[15] != 1) return false;  // projective
-  const F3 c0{m[0], m[1], m[2]}, c1{m[4], m[5], m[6]}, c2{m[8], m[9], m[10]};
-  auto sq = [](float x) { return x * x; };
-  const float l0 = dot3(c0, c0), l1 = dot3(c1, c1), l2 = dot3(c2, c2);
-  if (!(sq(l0 - l1) < sq(1e-6f) && sq(l0 - l2) < sq(1e-6f) && sq(l0 - 1.0f) <= sq(1e-6f))) return false;
-  if (!(sq(dot3(c0, c1)) < sq(1e-6f))) return false;
-  const F3 cross{c0[1] * c1[2] - c0[2] * c1[1], c0[2] * c1[0] - c0[0] * c1[2], c0[0] * c1[1] - c0[1] * c1[0]};
-  const F3 d{cross[0] - c2[0], cross[1] - c2[1], cross[2] - c2[2]};
-  return dot3(d, d) < sq(1e-6f);
-}
-
-// The modelview's inverse as Mesa's math module computes it for a length-preserving matrix
-// (invert_matrix_3d: the rotation transposed, the translation taken back through it), else
-// glm's general inverse.
-glm::mat4 mesa_inverse(const glm::mat4& m, bool rigid) {
-  if (!rigid) {  // a singular matrix's inverse is the identity (matrix_invert)
-    const glm::mat4 inv = glm::inverse(m);
-    for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r)
-        if (!std::isfinite(inv[c][r])) return glm::mat4(1.0f);
-    return glm::determinant(m) != 0 ? inv : glm::mat4(1.0f);
-  }
-  glm::mat4 out(1.0f);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) out[c][r] = m[r][c];
-  for (int r = 0; r < 3; ++r) out[3][r] = -(m[3][0] * out[0][r] + m[3][1] * out[1][r] + m[3][2] * out[2][r]);
-  return out;
-}
+float clamp01(float x) { return x > 0 ? (x > 1 ? 1 : x) : 0; }  // a NaN to 0, as Mesa's CLAMP
 
 }  // namespace
 
@@ -91,10 +58,11 @@ glm::mat4 mesa_inverse(const glm::mat4& m, bool rigid) {
 // object space, with the lights and the eye direction taken back through the modelview's inverse.
 // Mesa's quirk: the vertex it lights is the object-space position in both spaces, so that in eye
 // space a positional light is measured from the wrong point (docs/deviations.md).
-glm::dvec4 Context::mesa_raster_color(const float obj[4]) const {
-  const glm::mat4& mv4 = modelview_f_.back();
-  const bool rigid = length_preserving(mv4);
-  const glm::mat4 inv4 = mesa_inverse(mv4, rigid);
+glm::dvec4 Context::mesa_raster_color(const float obj[4]) {
+  fmat::Matrix& modelview = modelview_f_.back();  // analysed (validate_matrices)
+  const glm::mat4& inv4 = modelview.inverse();
+  const bool rigid = modelview.length_preserving();
+  const glm::mat4& mv4 = modelview.values();
   const float *mv = glm::value_ptr(mv4), *inv = glm::value_ptr(inv4);
   bool need_eye = model_.local_viewer || !rigid;
   for (const lighting::LightParams& l : lights_)
@@ -207,12 +175,13 @@ glm::dvec4 Context::mesa_raster_color(const float obj[4]) const {
 
 void Context::RasterPos(double x, double y, double z, double w) {
   if (!outside_begin_end()) return;
-  flush_stored();  // Mesa: FLUSH_VERTICES and FLUSH_CURRENT first
+  flush_stored();  // Mesa: FLUSH_VERTICES and FLUSH_CURRENT first, then the state validated
+  validate_matrices();
   if (precision_ == Precision::Double || spec_) return raster_pos_spec(x, y, z, w);
   // Mesa (rastpos.c): in float, the modelview and then the projection, one after the other.
   const float obj[4] = {float(x), float(y), float(z), float(w)};
-  const std::array<float, 4> eye = times_point(glm::value_ptr(modelview_f_.back()), obj);
-  const std::array<float, 4> c = times_point(glm::value_ptr(projection_f_.back()), eye.data());
+  const std::array<float, 4> eye = times_point(glm::value_ptr(modelview_f_.back().values()), obj);
+  const std::array<float, 4> c = times_point(glm::value_ptr(projection_f_.back().values()), eye.data());
   // Clipped as a point against the six planes only: a NaN coordinate compares false and leaves
   // the position valid, w = 0 at the origin is valid, and an invalid position keeps the last
   // valid one (measured; GL 2.1 leaves both undefined).
@@ -234,7 +203,6 @@ void Context::RasterPos(double x, double y, double z, double w) {
 // GL 2.1 section 2.13: the raster position is a vertex through the vertex stage, lit as one.
 void Context::raster_pos_spec(double x, double y, double z, double w) {
   update_vertex_constants();
-  mvp_f_ = fmat::mul(projection_f_.back(), modelview_f_.back());
   bool zero_normal = false;
   const raster::Vertex v = vertex({x, y, z, w}, normal_, color_, &zero_normal);
   const glm::dvec4& c = v.clip;
@@ -301,12 +269,17 @@ bool known_type(GLenum t) {
 
 void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
   if (!outside_begin_end()) return;
+  flush_stored();  // Mesa: FLUSH_VERTICES before anything else
+  validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (!known_format(format) || !known_type(type)) return error(GL_INVALID_ENUM);
   if (render_mode_ == GL_FEEDBACK) {
     // Feedback gets the raster position as a vertex after GL_DRAW_PIXEL_TOKEN (GL 2.1 section 5.3),
     // its texture coordinates the texture matrix's last column (the current ones are (0, 0, 0, 1)).
     if (!raster_pos_.valid) return;
+    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
+      if (enabled_state(gen) == 1 && (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE))
+        deviations_.insert(kTexGen);
     feedback_put(GL_DRAW_PIXEL_TOKEN);
     const glm::dvec4& p = raster_pos_.window;
     feedback_put(p.x), feedback_put(p.y);
@@ -315,7 +288,7 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
     if (feedback_type_ != GL_2D && feedback_type_ != GL_3D)
       for (int k = 0; k < 4; ++k) feedback_put(raster_pos_.color[k]);
     if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
-      for (int k = 0; k < 4; ++k) feedback_put(texture_f_.back()[3][k]);
+      for (int k = 0; k < 4; ++k) feedback_put(texture_f_.back().values()[3][k]);
     return;
   }
   Layout layout;
@@ -328,7 +301,10 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
   }
   const glm::dvec4& rp = raster_pos_.window;
   if (!raster_pos_.valid || render_mode_ != GL_RENDER || !pixels) return;  // no fragments
-  if (!(std::abs(rp.x) < 1e9 && std::abs(rp.y) < 1e9)) return;            // NaN or far away: none we can place
+  if (!(std::abs(rp.x) < 1e9 && std::abs(rp.y) < 1e9)) {                 // NaN or far away: none we can place
+    if (!(std::isfinite(rp.x) && std::isfinite(rp.y)) && w > 0 && h > 0) deviations_.insert(kNonfiniteDrawPixels);
+    return;
+  }
   flush_clear();
   // Unpacking (GL 2.1 section 3.6.4): rows of GL_UNPACK_ROW_LENGTH pixels (w when 0), each
   // starting at a multiple of GL_UNPACK_ALIGNMENT, after the skipped rows and pixels.

@@ -12,7 +12,7 @@ namespace {
 bool is_plain_type(GLenum t) {
   switch (t) {
     case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_UNSIGNED_INT: case GL_INT:
-    case GL_FLOAT: return true;
+    case GL_FLOAT: case GL_HALF_FLOAT: return true;  // GL_HALF_FLOAT: GL 3.0, which Mesa takes here
   }
   return false;
 }
@@ -70,7 +70,7 @@ int colour_channels(GLenum format, int* ch) {
 int type_size(GLenum t) {
   switch (t) {
     case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: return 2;
     default: return 4;
   }
 }
@@ -113,6 +113,26 @@ void put(uint8_t* p, T v) {
   std::memcpy(p, &v, sizeof v);
 }
 
+// A float as a half float, rounded to nearest, ties to even (Mesa packs GL_HALF_FLOAT as it
+// packs GL_FLOAT, then converts each value so: measured, colour, luminance and depth alike).
+uint16_t to_half(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  const uint16_t sign = uint16_t((u >> 16) & 0x8000u);
+  const uint32_t abs = u & 0x7FFFFFFFu;
+  if (abs >= 0x7F800000u) return uint16_t(sign | (abs > 0x7F800000u ? 0x7E00u : 0x7C00u));  // NaN, infinity
+  if (abs >= 0x477FF000u) return uint16_t(sign | 0x7C00u);  // rounds past the largest half
+  const int exp = int(abs >> 23) - 127;
+  if (exp < -25) return sign;  // below half the smallest subnormal
+  uint32_t mant = (abs & 0x7FFFFFu) | 0x800000u;
+  // Shift the 24-bit significand down to the half's 11 bits (fewer for subnormals), rounding.
+  const int shift = exp < -14 ? 13 + (-14 - exp) : 13;
+  const uint32_t kept = mant >> shift, rest = mant & ((1u << shift) - 1), half = 1u << (shift - 1);
+  uint32_t h = kept + (rest > half || (rest == half && (kept & 1u)) ? 1u : 0u);
+  if (exp >= -14) h = (uint32_t(exp + 15) << 10) + (h - 0x400u);  // normal: the carry may bump the exponent
+  return uint16_t(sign | h);
+}
+
 // One component of `type` from a colour byte.
 void put_from_byte(uint8_t* p, GLenum type, unsigned x) {
   switch (type) {
@@ -123,6 +143,7 @@ void put_from_byte(uint8_t* p, GLenum type, unsigned x) {
     case GL_UNSIGNED_INT: return put(p, uint32_t(unorm8_to_unorm(x, 32)));
     case GL_INT: return put(p, int32_t(unorm8_to_unorm(x, 31)));
     case GL_FLOAT: return put(p, float(x) * (1.0f / 255.0f));
+    case GL_HALF_FLOAT: return put(p, to_half(float(x) * (1.0f / 255.0f)));
   }
 }
 
@@ -136,6 +157,7 @@ void put_from_float(uint8_t* p, GLenum type, float v) {
     case GL_UNSIGNED_INT: return put(p, float_to_unorm(v, 32));
     case GL_INT: return put(p, float_to_snorm(v, 32));
     case GL_FLOAT: return put(p, v);
+    case GL_HALF_FLOAT: return put(p, to_half(v));
   }
 }
 
@@ -159,6 +181,7 @@ void put_depth(uint8_t* p, GLenum type, uint32_t z, bool swapped) {
       return put(p, swapped ? uint32_t(4294967295.0 * double(d)) : uint32_t(z << 8 | z >> 16));
     case GL_INT: return put(p, int32_t(2147483647.0 * double(d)));
     case GL_FLOAT: return put(p, d);
+    case GL_HALF_FLOAT: return put(p, to_half(d));
   }
 }
 

@@ -144,7 +144,7 @@ void Context::shade_range(GLint first, GLint count) {
   const raster::State rs = raster_state();
   raster::ShadedVertices& out = shaded_;
   out.resize(size_t(count), rs.two_side, rs.add_secondary);
-  const glm::mat4 modelview = modelview_f_.back();
+  const glm::mat4 modelview = modelview_f_.back().values();
   const glm::dmat3 inv = normal_matrix_;
   const double rescale = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
 
