@@ -116,10 +116,17 @@ class Gen {
     // but not for an array's type (a wider type would read past the array as well).
     const bool typed_memory = name == "glVertexPointer" || name == "glNormalPointer" || name == "glColorPointer" ||
                               name == "glDrawElements";
+    // Left valid: an array's size while no array has been given a pointer (the call would fail,
+    // leaving the array without one, and Mesa's draw would read address 0), and glDrawArrays'
+    // first (a negative one is no error in GL 2.1 and Mesa reads before the arrays).
+    auto undefined_if_invalid = [&](size_t k) {
+      return (k == 0 && (name == "glVertexPointer" || name == "glColorPointer") && !arrays_set_) ||
+             (k == 1 && name == "glDrawArrays");
+    };
     if (o_.has("invalid") && !c.args.empty() && chance(0.08)) {
       const size_t k = size_t(pick(int(c.args.size())));
       Arg& a = c.args[k];
-      if (a.kind == Arg::Kind::Num) {
+      if (a.kind == Arg::Kind::Num && !undefined_if_invalid(k)) {
         if (params[k] == Param::Enum && !typed_memory)
           a.num = chance(0.8) ? known_enums()[size_t(pick(int(known_enums().size())))] : one_of({0.0, double(0x1234), 4294967295.0});
         else if (params[k] == Param::Int) a.num = name == "glArrayElement" ? -1.0 : one_of({-1.0, -100.0});

@@ -1131,15 +1131,35 @@ bool Context::fits_in_memory(uint64_t n) {
   return false;
 }
 
+// With the vertex array disabled GL draws nothing. Mesa draws all the same, each vertex at the
+// current position, which its vbo module never updates from glVertex: the object-space origin
+// (0, 0, 0, 1) every time, the other attributes from their arrays or current values. The default
+// mode does so too (a constant array of the origin stands in for the positions); spec mode draws
+// nothing.
+template <class Draw>
+void Context::with_positions(Draw draw) {
+  if (vertex_array_.enabled) return draw();
+  if (spec_) return;
+  static const float kOrigin[4] = {0, 0, 0, 1};
+  const ClientArray kept = vertex_array_;
+  vertex_array_ = {true, 4, GL_FLOAT, 0, kOrigin, true};
+  draw();
+  vertex_array_ = kept;
+}
+
 // glDrawArrays and glDrawElements check as Mesa's draw_validate.c does: the count, then the mode,
 // then the index type.
 void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   if (!outside_begin_end()) return;
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
+  with_positions([&] { draw_arrays(mode, first, count); });
+}
+
+void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
   // draws nothing.
-  if (!vertex_array_.enabled || first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
+  if (first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
@@ -1162,7 +1182,11 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
-  if (!vertex_array_.enabled || !indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
+  with_positions([&] { draw_elements(mode, count, type, indices); });
+}
+
+void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (!indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
@@ -1207,6 +1231,26 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
 
 // ---------------------------------------------------------------- primitives
 
+// A fed-back triangle's depths as the offset stage of Mesa's draw module leaves them
+// (draw_pipe_offset.c): z + units + max(|dz/dx|, |dz/dy|) * factor in float, both terms 0 unless
+// GL_POLYGON_OFFSET_FILL is on (polygons are filled), then clamped to [0, 1] by a clamp that takes
+// NaN to 0. The slopes divide by the triangle's doubled area, so a triangle of zero area gets
+// 0/0 or x/0 there, and 0 times that a NaN: its depths all become 0.
+void Context::feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const {
+  float p[3][3];
+  for (int k = 0; k < 3; ++k) p[k][0] = float(v[k]->pos.x), p[k][1] = float(v[k]->pos.y), p[k][2] = float(v[k]->pos.z);
+  const float ex = p[0][0] - p[2][0], ey = p[0][1] - p[2][1], ez = p[0][2] - p[2][2];
+  const float fx = p[1][0] - p[2][0], fy = p[1][1] - p[2][1], fz = p[1][2] - p[2][2];
+  const float det = ex * fy - ey * fx, inv_det = 1.0f / det;
+  const float dzdx = std::fabs((ey * fz - ez * fy) * inv_det), dzdy = std::fabs((ez * fx - ex * fz) * inv_det);
+  const float scale = offset_fill_ ? offset_factor_ : 0.0f, units = offset_fill_ ? rs.offset_units : 0.0f;
+  const float offset = units + (dzdx > dzdy ? dzdx : dzdy) * scale;
+  for (int k = 0; k < 3; ++k) {
+    const float d = p[k][2] + offset;
+    z[k] = d > 0 ? (d > 1 ? 1.0f : d) : 0.0f;
+  }
+}
+
 void Context::flush_primitive() {
   if (render_mode_ == GL_SELECT) {  // selection is not modelled: nothing is drawn
     verts_.clear();
@@ -1214,6 +1258,8 @@ void Context::flush_primitive() {
   }
   const raster::State rs = raster_state();
   const bool feedback = render_mode_ == GL_FEEDBACK;
+  const bool lines = prim_mode_ == GL_LINES || prim_mode_ == GL_LINE_STRIP || prim_mode_ == GL_LINE_LOOP;
+  if (!feedback && lines && (elements_.empty() ? verts_.size() : elements_.size()) >= 2 && enabled_state(GL_LINE_SMOOTH) == 1) deviations_.insert(kLineSmooth);
   std::vector<raster::Triangle>& tris = triangles_;
   tris.clear();
 
@@ -1225,13 +1271,21 @@ void Context::flush_primitive() {
   // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it
   // (emit_poly in draw_pipe_clip.c): a fan of triangles (v[i], v[i+1], v[0]), the first vertex
   // last, also when the clipped polygon is a triangle.
+  // Any of the three polygon offset enables puts the offset stage of Mesa's draw module in the
+  // feedback pipeline (feedback_offset).
+  const bool offset_stage = feedback && (offset_fill_ || enabled_state(GL_POLYGON_OFFSET_LINE) == 1 ||
+                                         enabled_state(GL_POLYGON_OFFSET_POINT) == 1);
   auto emit_feedback = [&](GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped) {
     auto one = [&](std::initializer_list<const raster::WindowVertex*> vs) {
       put(kind);
       if (kind == GL_POLYGON_TOKEN) put(double(vs.size()));
+      float z[3] = {};
+      if (kind == GL_POLYGON_TOKEN && offset_stage) feedback_offset(vs.begin(), rs, z);
+      int n = 0;
       for (const raster::WindowVertex* v : vs) {
         put(v->pos.x), put(v->pos.y);
-        if (feedback_type_ != GL_2D) put(v->pos.z);
+        if (feedback_type_ != GL_2D) put(kind == GL_POLYGON_TOKEN && offset_stage ? double(z[n]) : v->pos.z);
+        ++n;
         if (feedback_type_ == GL_4D_COLOR_TEXTURE) put(1 / v->inv_w);
         if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE ||
             feedback_type_ == GL_4D_COLOR_TEXTURE)
@@ -1298,6 +1352,7 @@ void Context::flush_primitive() {
     }
     for (int k = 0; k < 3; ++k) scratch.prim[k] = verts_[v[k]];
     const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs, &at(provoking), false, nullptr, feedback ? &clip_temps_ : nullptr);
+    if (feedback && clip_temps_.read_unwritten) deviations_.insert(kClipTempsUnwritten);
     if (w.empty()) return;
     if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w.begin(), w.size(), true);
     raster::Triangle t;
@@ -1315,6 +1370,7 @@ void Context::flush_primitive() {
     // Feedback reports each vertex's own colour (Mesa does not flatten there), but for the ends
     // that clipping makes (clip_and_map).
     const raster::WindowPolygon w = raster::clip_and_map(prim.begin(), 2, rs, &at(provoking), true, nullptr, feedback ? &clip_temps_ : nullptr);
+    if (feedback && clip_temps_.read_unwritten) deviations_.insert(kClipTempsUnwritten);
     if (w.empty()) return;
     if (feedback) return emit_feedback(kind, w.begin(), w.size(), true);
     if (is_point) {
