@@ -98,6 +98,14 @@ const std::vector<KnownDeviation>& known_deviations() {
          }
          return false;
        }},
+      {"soft-out-of-memory",
+       "a draw of more vertices than half the machine's memory holds: soft records GL_OUT_OF_MEMORY before allocating (GL 2.1 allows it), Mesa draws",
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
+         if (m.kind != "error" || m.call < 0 || size_t(m.call) >= soft.errors.size()) return false;
+         const std::string& n = name_of(s[size_t(m.call)]);
+         return (n == "glDrawArrays" || n == "glDrawElements") && soft.errors[size_t(m.call)] == GL_OUT_OF_MEMORY &&
+                mesa.errors[size_t(m.call)] == GL_NO_ERROR;
+       }},
       {"current-undefined-after-draw",
        "GL 2.1 section 2.8: with the normal or colour array enabled, the current normal or colour is indeterminate after glDrawArrays / glDrawElements",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {

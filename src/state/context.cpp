@@ -1231,6 +1231,14 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
 
 // ---------------------------------------------------------------- primitives
 
+// Whether a triangle's window-space area is 0 as Mesa's draw module computes it (float, edges
+// from the third vertex).
+static bool zero_area(const raster::WindowVertex* const* v) {
+  const float ex = float(v[0]->pos.x) - float(v[2]->pos.x), ey = float(v[0]->pos.y) - float(v[2]->pos.y);
+  const float fx = float(v[1]->pos.x) - float(v[2]->pos.x), fy = float(v[1]->pos.y) - float(v[2]->pos.y);
+  return ex * fy - ey * fx == 0;
+}
+
 // A fed-back triangle's depths as the offset stage of Mesa's draw module leaves them
 // (draw_pipe_offset.c): z + units + max(|dz/dx|, |dz/dy|) * factor in float, both terms 0 unless
 // GL_POLYGON_OFFSET_FILL is on (polygons are filled), then clamped to [0, 1] by a clamp that takes
@@ -1277,6 +1285,9 @@ void Context::flush_primitive() {
                                          enabled_state(GL_POLYGON_OFFSET_POINT) == 1);
   auto emit_feedback = [&](GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped) {
     auto one = [&](std::initializer_list<const raster::WindowVertex*> vs) {
+      // Mesa's cull stage runs after its clipper, on each triangle it passes on, and culls one of
+      // zero area in window space (its float determinant 0) whichever faces are culled.
+      if (kind == GL_POLYGON_TOKEN && rs.cull && zero_area(vs.begin())) return;
       put(kind);
       if (kind == GL_POLYGON_TOKEN) put(double(vs.size()));
       float z[3] = {};
@@ -1334,10 +1345,13 @@ void Context::flush_primitive() {
       const bool use_back = back && rs.two_side;
       if (feedback) {  // each vertex's own colour
         raster::WindowVertex* in = scratch.inside;
+        // Mesa's two-side stage takes a triangle of zero area (determinant 0) as front-facing.
+        const raster::WindowVertex* wv[3] = {&window_[v[0]], &window_[v[1]], &window_[v[2]]};
+        const bool reported_back = use_back && !zero_area(wv);
         for (int k = 0; k < 3; ++k) {
           in[k] = window_[v[k]];
-          in[k].color = use_back ? verts_[v[k]].back : verts_[v[k]].front;
-          in[k].sec = use_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
+          in[k].color = reported_back ? verts_[v[k]].back : verts_[v[k]].front;
+          in[k].sec = reported_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
         }
         return emit_feedback(GL_POLYGON_TOKEN, in, 3, false);
       }
