@@ -19,12 +19,20 @@ bool any_call(const Stream& s, int upto, Pred pred) {
 
 bool is(const Call& c, const char* name) { return name_of(c) == name; }
 
+// The last call that can have caused m: a feedback buffer is written until the next
+// glFeedbackBuffer replaces it (-1: the end), other kinds show at their call.
+int reach(const Stream& s, const Mismatch& m) {
+  if (m.kind != "feedback" || m.call < 0) return m.call;
+  for (size_t i = size_t(m.call) + 1; i < s.size(); ++i)
+    if (is(s[i], "glFeedbackBuffer")) return int(i) - 1;
+  return -1;
+}
+
 // Mesa records an error and applies the call anyway: everything after it may differ, but not the
 // error of the call itself, which both sides must raise alike.
 bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& mesa,
                         bool (*call_matches)(const Call&)) {
-  // A feedback buffer is compared as it ends up: a call after the one that gave it counts too.
-  return any_call(s, m.kind == "feedback" ? -1 : m.call, [&](const Call& c, size_t i) {
+  return any_call(s, reach(s, m), [&](const Call& c, size_t i) {
     return call_matches(c) && i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR &&
            !(m.kind == "error" && int(i) == m.call);
   });
@@ -66,7 +74,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       {"mesa-array-element-out-of-range",
        "Mesa reads outside the client arrays for glArrayElement with an index they do not hold (no error is defined); the values it passes on are garbage",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
-         return any_call(s, m.call, [](const Call& c, size_t) { return is(c, "glArrayElement") && c.args[0].num < 0; });
+         return any_call(s, reach(s, m), [](const Call& c, size_t) { return is(c, "glArrayElement") && c.args[0].num < 0; });
        }},
       {"soft-null-array-pointer",
        "an enabled array that was never given a pointer: Mesa reads address 0 (garbage or a crash), soft reads nothing and records GL_INVALID_OPERATION",
@@ -89,6 +97,14 @@ const std::vector<KnownDeviation>& known_deviations() {
            if (enabled && !given) return true;
          }
          return false;
+       }},
+      {"soft-out-of-memory",
+       "a draw of more vertices than half the machine's memory holds: soft records GL_OUT_OF_MEMORY before allocating (GL 2.1 allows it), Mesa draws",
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
+         if (m.kind != "error" || m.call < 0 || size_t(m.call) >= soft.errors.size()) return false;
+         const std::string& n = name_of(s[size_t(m.call)]);
+         return (n == "glDrawArrays" || n == "glDrawElements") && soft.errors[size_t(m.call)] == GL_OUT_OF_MEMORY &&
+                mesa.errors[size_t(m.call)] == GL_NO_ERROR;
        }},
       {"current-undefined-after-draw",
        "GL 2.1 section 2.8: with the normal or colour array enabled, the current normal or colour is indeterminate after glDrawArrays / glDrawElements",
@@ -116,6 +132,8 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("zero-normal-normalize", state::kZeroNormal),
       drawn("soft-drawpixels-nonfinite-position", state::kNonfiniteDrawPixels),
       drawn("soft-texgen-not-modelled", state::kTexGen),
+      drawn("mesa-clip-temps-uninitialised", state::kClipTempsUnwritten),
+      drawn("soft-line-smooth-not-modelled", state::kLineSmooth),
   };
   return v;
 }

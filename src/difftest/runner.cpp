@@ -268,9 +268,13 @@ SideResult execute(const Stream& s, Side side, const RunOptions& o, volatile int
     r.errors.push_back(glGetError());
   }
   *progress = int(s.size());
-  // Out of feedback mode and past any open glBegin, so the picture can be read; then every output
-  // buffer as it stands.
+  // Past any open glBegin (a shrunk stream may have lost its glEnd: glFinish inside would be an
+  // error that flushes nothing on Mesa, its vbo still holding earlier primitives), so the picture
+  // can be read; then every output buffer as it stands. The errors here are not compared.
+  glEnd();
   glFinish();
+  while (glGetError() != GL_NO_ERROR) {
+  }
   image::Image img;
   backend->read_into(img);
   r.width = img.width, r.height = img.height;

@@ -256,7 +256,10 @@ WindowPolygon clip_and_map_in(const Vertex* prim, size_t count, const State& s, 
   // clip-made vertex reports whatever colours its temporary last held, from an earlier primitive.
   unsigned tmpnr = 0;
   auto slot = [&](glm::vec<4, T>* c, bool load) {
-    glm::vec4* t = feedback->c[std::min<unsigned>(tmpnr++, ClipTemps::kSlots - 1)];
+    const unsigned i = std::min<unsigned>(tmpnr++, ClipTemps::kSlots - 1);
+    glm::vec4* t = feedback->c[i];
+    if (load && !feedback->written[i]) feedback->read_unwritten = true;
+    if (!load) feedback->written[i] = true;
     for (int k = 0; k < 4; ++k)
       if (load) c[k] = glm::vec<4, T>(t[k]);
       else t[k] = glm::vec4(c[k]);

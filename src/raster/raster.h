@@ -140,6 +140,11 @@ bool culled(bool back_facing, const State& s);
 struct ClipTemps {
   static constexpr unsigned kSlots = 16;  // a triangle against six planes makes at most 13
   glm::vec4 c[kSlots][4]{};
+  // Mesa allocates its temporaries uninitialised (malloc): what one holds before any clipped
+  // primitive wrote it is undefined (zeros in a fresh process, garbage later). Set when feedback
+  // reported such a slot's colours.
+  bool written[kSlots]{};
+  bool read_unwritten = false;
 };
 using WindowPolygon = Fixed<WindowVertex, 10>;
 WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,

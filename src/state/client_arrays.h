@@ -53,6 +53,7 @@ inline double read_component(const uint8_t* p, GLenum type, int k, Fixed f) {
 }
 
 inline const uint8_t* element(const ClientArray& a, GLint i) {
+  if (a.repeated) return static_cast<const uint8_t*>(a.pointer);
   const size_t stride = a.stride ? size_t(a.stride) : a.size * type_size(a.type);
   return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
 }

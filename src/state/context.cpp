@@ -1145,6 +1145,22 @@ bool Context::fits_in_memory(uint64_t n) {
   return false;
 }
 
+// With the vertex array disabled GL draws nothing. Mesa draws all the same, each vertex at the
+// current position, which its vbo module never updates from glVertex: the object-space origin
+// (0, 0, 0, 1) every time, the other attributes from their arrays or current values. The default
+// mode does so too (a constant array of the origin stands in for the positions); spec mode draws
+// nothing.
+template <class Draw>
+void Context::with_positions(Draw draw) {
+  if (vertex_array_.enabled) return draw();
+  if (spec_) return;
+  static const float kOrigin[4] = {0, 0, 0, 1};
+  const ClientArray kept = vertex_array_;
+  vertex_array_ = {true, 4, GL_FLOAT, 0, kOrigin, true};
+  draw();
+  vertex_array_ = kept;
+}
+
 // glDrawArrays and glDrawElements check as Mesa's draw_validate.c does: the count, then the mode,
 // then the index type.
 void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
@@ -1152,9 +1168,13 @@ void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
   validate_matrices();  // before any argument is checked, as Mesa's draws
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
+  with_positions([&] { draw_arrays(mode, first, count); });
+}
+
+void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
   // draws nothing.
-  if (!vertex_array_.enabled || first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
+  if (first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
@@ -1177,7 +1197,11 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
   if (count < 0) return error(GL_INVALID_VALUE);
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
-  if (!vertex_array_.enabled || !indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
+  with_positions([&] { draw_elements(mode, count, type, indices); });
+}
+
+void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (!indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
@@ -1221,6 +1245,34 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
 
 // ---------------------------------------------------------------- primitives
 
+// Whether a triangle's window-space area is 0 as Mesa's draw module computes it (float, edges
+// from the third vertex).
+static bool zero_area(const raster::WindowVertex* const* v) {
+  const float ex = float(v[0]->pos.x) - float(v[2]->pos.x), ey = float(v[0]->pos.y) - float(v[2]->pos.y);
+  const float fx = float(v[1]->pos.x) - float(v[2]->pos.x), fy = float(v[1]->pos.y) - float(v[2]->pos.y);
+  return ex * fy - ey * fx == 0;
+}
+
+// A fed-back triangle's depths as the offset stage of Mesa's draw module leaves them
+// (draw_pipe_offset.c): z + units + max(|dz/dx|, |dz/dy|) * factor in float, both terms 0 unless
+// GL_POLYGON_OFFSET_FILL is on (polygons are filled), then clamped to [0, 1] by a clamp that takes
+// NaN to 0. The slopes divide by the triangle's doubled area, so a triangle of zero area gets
+// 0/0 or x/0 there, and 0 times that a NaN: its depths all become 0.
+void Context::feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const {
+  float p[3][3];
+  for (int k = 0; k < 3; ++k) p[k][0] = float(v[k]->pos.x), p[k][1] = float(v[k]->pos.y), p[k][2] = float(v[k]->pos.z);
+  const float ex = p[0][0] - p[2][0], ey = p[0][1] - p[2][1], ez = p[0][2] - p[2][2];
+  const float fx = p[1][0] - p[2][0], fy = p[1][1] - p[2][1], fz = p[1][2] - p[2][2];
+  const float det = ex * fy - ey * fx, inv_det = 1.0f / det;
+  const float dzdx = std::fabs((ey * fz - ez * fy) * inv_det), dzdy = std::fabs((ez * fx - ex * fz) * inv_det);
+  const float scale = offset_fill_ ? offset_factor_ : 0.0f, units = offset_fill_ ? rs.offset_units : 0.0f;
+  const float offset = units + (dzdx > dzdy ? dzdx : dzdy) * scale;
+  for (int k = 0; k < 3; ++k) {
+    const float d = p[k][2] + offset;
+    z[k] = d > 0 ? (d > 1 ? 1.0f : d) : 0.0f;
+  }
+}
+
 void Context::flush_primitive() {
   if (render_mode_ == GL_SELECT) {  // selection is not modelled: nothing is drawn
     verts_.clear();
@@ -1228,6 +1280,8 @@ void Context::flush_primitive() {
   }
   const raster::State rs = raster_state();
   const bool feedback = render_mode_ == GL_FEEDBACK;
+  const bool lines = prim_mode_ == GL_LINES || prim_mode_ == GL_LINE_STRIP || prim_mode_ == GL_LINE_LOOP;
+  if (!feedback && lines && (elements_.empty() ? verts_.size() : elements_.size()) >= 2 && enabled_state(GL_LINE_SMOOTH) == 1) deviations_.insert(kLineSmooth);
   std::vector<raster::Triangle>& tris = triangles_;
   tris.clear();
 
@@ -1238,13 +1292,24 @@ void Context::flush_primitive() {
   // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it
   // (emit_poly in draw_pipe_clip.c): a fan of triangles (v[i], v[i+1], v[0]), the first vertex
   // last, also when the clipped polygon is a triangle.
+  // Any of the three polygon offset enables puts the offset stage of Mesa's draw module in the
+  // feedback pipeline (feedback_offset).
+  const bool offset_stage = feedback && (offset_fill_ || enabled_state(GL_POLYGON_OFFSET_LINE) == 1 ||
+                                         enabled_state(GL_POLYGON_OFFSET_POINT) == 1);
   auto emit_feedback = [&](GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped) {
     auto one = [&](std::initializer_list<const raster::WindowVertex*> vs) {
+      // Mesa's cull stage runs after its clipper, on each triangle it passes on, and culls one of
+      // zero area in window space (its float determinant 0) whichever faces are culled.
+      if (kind == GL_POLYGON_TOKEN && rs.cull && zero_area(vs.begin())) return;
       put(kind);
       if (kind == GL_POLYGON_TOKEN) put(double(vs.size()));
+      float z[3] = {};
+      if (kind == GL_POLYGON_TOKEN && offset_stage) feedback_offset(vs.begin(), rs, z);
+      int n = 0;
       for (const raster::WindowVertex* v : vs) {
         put(v->pos.x), put(v->pos.y);
-        if (feedback_type_ != GL_2D) put(v->pos.z);
+        if (feedback_type_ != GL_2D) put(kind == GL_POLYGON_TOKEN && offset_stage ? double(z[n]) : v->pos.z);
+        ++n;
         if (feedback_type_ == GL_4D_COLOR_TEXTURE) put(1 / v->inv_w);
         if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE ||
             feedback_type_ == GL_4D_COLOR_TEXTURE)
@@ -1293,10 +1358,13 @@ void Context::flush_primitive() {
       const bool use_back = back && rs.two_side;
       if (feedback) {  // each vertex's own colour
         raster::WindowVertex* in = scratch.inside;
+        // Mesa's two-side stage takes a triangle of zero area (determinant 0) as front-facing.
+        const raster::WindowVertex* wv[3] = {&window_[v[0]], &window_[v[1]], &window_[v[2]]};
+        const bool reported_back = use_back && !zero_area(wv);
         for (int k = 0; k < 3; ++k) {
           in[k] = window_[v[k]];
-          in[k].color = use_back ? verts_[v[k]].back : verts_[v[k]].front;
-          in[k].sec = use_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
+          in[k].color = reported_back ? verts_[v[k]].back : verts_[v[k]].front;
+          in[k].sec = reported_back ? verts_[v[k]].back_sec : verts_[v[k]].front_sec;
         }
         return emit_feedback(GL_POLYGON_TOKEN, in, 3, false);
       }
@@ -1311,6 +1379,7 @@ void Context::flush_primitive() {
     }
     for (int k = 0; k < 3; ++k) scratch.prim[k] = verts_[v[k]];
     const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs, &at(provoking), false, nullptr, feedback ? &clip_temps_ : nullptr);
+    if (feedback && clip_temps_.read_unwritten) deviations_.insert(kClipTempsUnwritten);
     if (w.empty()) return;
     if (feedback) return emit_feedback(GL_POLYGON_TOKEN, w.begin(), w.size(), true);
     raster::Triangle t;
@@ -1328,6 +1397,7 @@ void Context::flush_primitive() {
     // Feedback reports each vertex's own colour (Mesa does not flatten there), but for the ends
     // that clipping makes (clip_and_map).
     const raster::WindowPolygon w = raster::clip_and_map(prim.begin(), 2, rs, &at(provoking), true, nullptr, feedback ? &clip_temps_ : nullptr);
+    if (feedback && clip_temps_.read_unwritten) deviations_.insert(kClipTempsUnwritten);
     if (w.empty()) return;
     if (feedback) return emit_feedback(kind, w.begin(), w.size(), true);
     if (is_point) {

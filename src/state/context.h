@@ -26,6 +26,12 @@ namespace ffc::state {
 
 enum class Precision { Float, Double };
 
+inline constexpr const char* kClipTempsUnwritten =
+    "flat feedback of a clipped primitive reports a clip-made vertex's colours from a temporary "
+    "Mesa's clipper allocated uninitialised and had not yet written";
+inline constexpr const char* kLineSmooth =
+    "GL_LINE_SMOOTH is not modelled: lines are drawn aliased, where llvmpipe draws them wider "
+    "through its draw module's antialiasing stage (a zero-length one as a dot)";
 inline constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
 // Not modelled, reported when met: what Mesa does there is not soft's picture or feedback.
 inline constexpr const char* kNonfiniteDrawPixels =
@@ -47,6 +53,7 @@ struct ClientArray {
   GLenum type = GL_FLOAT;
   GLsizei stride = 0;
   const void* pointer = nullptr;
+  bool repeated = false;  // every element is the first (a constant attribute, not a GL array)
 };
 
 class Context {
@@ -213,6 +220,11 @@ class Context {
   void flush_current();
   void flush_stored();
   void begin_draw();
+  void feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const;
+  template <class Draw>
+  void with_positions(Draw draw);  // the vertex array, or Mesa's stand-in (no std::function: no allocation)
+  void draw_arrays(GLenum mode, GLint first, GLsizei count);
+  void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void set_color_varies(bool v);
   bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
   void flush_primitive();

@@ -23,7 +23,9 @@ void APIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { FWD(C
 void APIENTRY ClearDepth(GLclampd d) { FWD(ClearDepth(d)); }
 void APIENTRY Color3f(GLfloat r, GLfloat g, GLfloat b) { FWD(Color(r, g, b, 1, 3)); }
 void APIENTRY Color3fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], 1, 3)); }
-void APIENTRY Color3ub(GLubyte r, GLubyte g, GLubyte b) { FWD(Color(r / 255.0, g / 255.0, b / 255.0, 1, 3)); }
+// Mesa's vbo takes glColor3ub (as every glColor3 but the float ones) as a 4-component colour with
+// alpha 1, so it never keeps an old alpha (Context::Color).
+void APIENTRY Color3ub(GLubyte r, GLubyte g, GLubyte b) { FWD(Color(r / 255.0, g / 255.0, b / 255.0, 1, 4)); }
 void APIENTRY Color4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { FWD(Color(r, g, b, a)); }
 void APIENTRY Color4fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], v[3])); }
 void APIENTRY ColorMaterial(GLenum f, GLenum m) { FWD(ColorMaterial(f, m)); }

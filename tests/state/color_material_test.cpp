@@ -168,6 +168,42 @@ std::vector<Case> alpha_streams() {
 // of its size, which Context::Color does not model. Listed, not hidden.
 const char* const kUnexplainedAlpha[] = {"Alpha17_", "Alpha19_", "Alpha110_", "Alpha128_"};
 
+// glColor3ub among glColor4f / glColor3f (no glBegin/glEnd): Mesa's vbo takes glColor3ub as a
+// 4-component colour, alpha 1, so it never keeps the old alpha as glColor3f may.
+std::vector<Case> ub_alpha_streams() {
+  std::vector<Case> rows;
+  std::mt19937 rng(34);
+  const std::string ops = "4433uueg";
+  for (int n = 0; n < 100; ++n) {
+    std::string steps;
+    const int length = 3 + int(rng() % 8);
+    for (int k = 0; k < length; ++k) steps += ops[rng() % ops.size()];
+    steps += 'g';
+    rows.push_back({"UbAlpha" + std::to_string(n) + "_" + steps, nullptr, [steps] {
+                      int k = 0;
+                      for (char op : steps) {
+                        const GLfloat v = 0.125f * GLfloat(++k % 8);
+                        switch (op) {
+                          case '4': glColor4f(v, 0.5f, 0.25f, v); break;
+                          case '3': glColor3f(0.5f, v, 0.75f); break;
+                          case 'u': glColor3ub(GLubyte(32 * (k % 8)), 128, 64); break;
+                          case 'e': glEnable(GL_DEPTH_TEST), glDisable(GL_DEPTH_TEST); break;
+                          case 'g': {
+                            GLfloat c[4];
+                            glGetFloatv(GL_CURRENT_COLOR, c);
+                            observe(std::to_string(k) + " alpha", c[3]);
+                            break;
+                          }
+                        }
+                      }
+                    }, OK});
+  }
+  return rows;
+}
+class ColorUbAlphaStreams : public ::testing::TestWithParam<Case> {};
+TEST_P(ColorUbAlphaStreams, MatchesMesa) { check_case(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Generated, ColorUbAlphaStreams, ::testing::ValuesIn(ub_alpha_streams()), case_name);
+
 class ColorAlphaStreams : public ::testing::TestWithParam<Case> {};
 TEST_P(ColorAlphaStreams, MatchesMesa) {
   for (const char* u : kUnexplainedAlpha)
