@@ -134,6 +134,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("soft-texgen-not-modelled", state::kTexGen),
       drawn("mesa-clip-temps-uninitialised", state::kClipTempsUnwritten),
       drawn("soft-line-smooth-not-modelled", state::kLineSmooth),
+      drawn("mesa-color3-shrink-in-primitive", state::kColorShrinkInPrimitive),
   };
   return v;
 }

@@ -861,7 +861,10 @@ void Context::Color(double r, double g, double b, double a, int components) {
   // streams (ColorMaterialStreams).
   if (!spec_) {
     if (components > color_size_) color_size_ = color_active_ = components;
-    else if (components < color_active_) color_active_ = components;
+    else if (components < color_active_) {
+      color_active_ = components;
+      if (in_begin_) deviations_.insert(kColorShrinkInPrimitive);  // docs/deviations.md row 44
+    }
     else if (components == 3) a = color_.a;
   }
   color_ = {r, g, b, a};

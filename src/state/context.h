@@ -36,6 +36,9 @@ inline constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZ
 // Not modelled, reported when met: what Mesa does there is not soft's picture or feedback.
 inline constexpr const char* kNonfiniteDrawPixels =
     "glDrawPixels at a raster position that is not finite: soft draws nothing, Mesa draws at a place of its own";
+inline constexpr const char* kColorShrinkInPrimitive =
+    "a glColor3 inside glBegin/glEnd after a glColor4 (the colour's active size shrinking mid-primitive): "
+    "Mesa reports alpha 1 for some vertices sent before it";
 inline constexpr const char* kTexGen =
     "texture coordinate generation (GL_TEXTURE_GEN_*) is not modelled: fed-back texture coordinates are the current ones";
 
