@@ -4,6 +4,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
@@ -31,7 +32,17 @@ class Backend {
 
 // "mesa" (Mesa's fixed-function pipeline, offscreen), "soft" (ours, float) or "soft-double" (ours,
 // the double reference), each of ours also as "-spec" (GL 2.1 to the letter where Mesa departs from
-// it, docs/deviations.md). Throws std::invalid_argument otherwise.
+// it, docs/deviations.md). Throws std::invalid_argument otherwise, and for "mesa" in a build
+// without OSMesa (or a program that does not link ffcompat_mesa).
 std::unique_ptr<Backend> make(const std::string& name);
+
+// A backend that lives in another library (Mesa's, in ffcompat_mesa, which needs OSMesa) offers
+// itself to make() through this hook when that library is linked. Returns true, for use as a
+// static initializer.
+using Factory = std::unique_ptr<Backend> (*)();
+bool register_backend(const std::string& name, Factory factory);
+
+// The names make() accepts in this program: ours, then the registered ones.
+std::vector<std::string> names();
 
 }  // namespace ffc::backends

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cli/common.h"
+#include "ffcompat/ffcompat.h"
 
 namespace ffc::cli {
 void add_check(CLI::App& app);  // check.cpp
@@ -22,6 +23,17 @@ void add_fuzz(CLI::App& app);    // fuzz.cpp
 int main(int argc, char** argv) {
   CLI::App app{"ffcompat: legacy OpenGL fixed-function lighting, rendered and checked against Mesa"};
   app.require_subcommand(1);
+  std::string backends;
+  for (const std::string& name : ffcompat::backends()) backends += (backends.empty() ? "" : ", ") + name;
+  app.set_version_flag("--version", std::string("ffcompat ") + ffcompat::version() + " (backends: " + backends + ")",
+                       "Print the version and the backends of this build (with --json: as JSON) and exit");
+  if (argc == 3 && std::string(argv[1]) == "--version" && std::string(argv[2]) == "--json") {
+    std::string list;
+    for (const std::string& name : ffcompat::backends()) list += (list.empty() ? "\"" : ", \"") + name + "\"";
+    std::cout << "{\"name\": \"ffcompat\", \"version\": \"" << ffcompat::version() << "\", \"backends\": [" << list
+              << "]}\n";
+    return 0;
+  }
   ffc::cli::add_render(app);
   ffc::cli::add_normals(app);
   ffc::cli::add_compare(app);

@@ -84,3 +84,10 @@ void MesaBackend::read_into(image::Image& img) {
 }
 
 }  // namespace ffc::backends
+
+// Offers "mesa" to backends::make(). ffcompat_mesa's users link with -u naming this symbol (its
+// INTERFACE_LINK_OPTIONS, and ffcompat.pc), so the linker keeps this object out of the static
+// library, and its registration with it.
+extern "C" const bool ffcompat_mesa_backend_registered;
+const bool ffcompat_mesa_backend_registered = ffc::backends::register_backend(
+    "mesa", []() -> std::unique_ptr<ffc::backends::Backend> { return std::make_unique<ffc::backends::MesaBackend>(); });
