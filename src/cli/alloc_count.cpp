@@ -11,6 +11,10 @@ namespace {
 std::atomic<uint64_t> g_allocations{0};
 }
 
+// The replacements below pair operator new with std::malloc and operator delete with std::free;
+// GCC, seeing free() reached from a delete expression, warns of a mismatch that is not one here.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 namespace ffc::cli {
 uint64_t allocations() { return g_allocations.load(std::memory_order_relaxed); }
 }  // namespace ffc::cli

@@ -88,11 +88,11 @@ scene::Spec SceneOptions::spec() const {
 }
 
 scene::Description SceneOptions::description() const {
-  const std::optional<scene::DrawPath> path =
-      draw.empty() ? std::nullopt : std::optional<scene::DrawPath>(scene::parse_draw_path(draw));  // throws for a bad name
+  const bool given = !draw.empty();
+  const scene::DrawPath path = given ? scene::parse_draw_path(draw) : scene::DrawPath{};  // throws for a bad name
   auto with_path = [&](scene::Description d) {
-    if (path)
-      for (scene::Object& o : d.objects) o.draw = *path;
+    if (given)
+      for (scene::Object& o : d.objects) o.draw = path;
     return d;
   };
   if (!is_file()) return with_path(scene::describe(spec()));
