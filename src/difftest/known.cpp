@@ -134,7 +134,22 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("soft-texgen-not-modelled", state::kTexGen),
       drawn("mesa-clip-temps-uninitialised", state::kClipTempsUnwritten),
       drawn("soft-line-smooth-not-modelled", state::kLineSmooth),
-      drawn("mesa-color3-shrink-in-primitive", state::kColorShrinkInPrimitive),
+      // Row 44: the alpha of vertices sent before the glColor3, and so of the current colour too.
+      {"mesa-color3-shrink-in-primitive", state::kColorShrinkInPrimitive,
+       [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         const bool kind = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
+                           (m.kind == "state" && m.key.find("GL_CURRENT_COLOR") != std::string::npos);
+         return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kColorShrinkInPrimitive) !=
+                            soft.deviations.end();
+       }},
+      // Row 46: what was drawn or fed back, and the count glRenderMode returns.
+      {"nonfinite-vertex", state::kNonfiniteVertex,
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         const bool kind = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
+                           (m.kind == "return" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glRenderMode");
+         return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kNonfiniteVertex) !=
+                            soft.deviations.end();
+       }},
   };
   return v;
 }

@@ -964,6 +964,9 @@ void Context::process_vertex(const glm::dvec4& obj) {
   bool zero_normal = false;
   verts_.push_back(vertex(obj, normal_, color_, &zero_normal));
   if (zero_normal) deviations_.insert(kZeroNormal);
+  const bool finite = std::isfinite(obj.x) && std::isfinite(obj.y) && std::isfinite(obj.z) && std::isfinite(obj.w) &&
+                      (!lighting_ || (std::isfinite(normal_.x) && std::isfinite(normal_.y) && std::isfinite(normal_.z)));
+  if (!finite) deviations_.insert(kNonfiniteVertex);
 }
 
 // A large glDrawArrays / glDrawElements range: the vertices are independent, so both cores take

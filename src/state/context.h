@@ -39,6 +39,9 @@ inline constexpr const char* kNonfiniteDrawPixels =
 inline constexpr const char* kColorShrinkInPrimitive =
     "a glColor3 inside glBegin/glEnd after a glColor4 (the colour's active size shrinking mid-primitive): "
     "Mesa reports alpha 1 for some vertices sent before it";
+inline constexpr const char* kNonfiniteVertex =
+    "a line, quad or polygon vertex with a NaN or infinite position or normal: undefined in GL; Mesa's clipper "
+    "and lighting keep remnants soft does not reproduce";
 inline constexpr const char* kTexGen =
     "texture coordinate generation (GL_TEXTURE_GEN_*) is not modelled: fed-back texture coordinates are the current ones";
 
