@@ -134,6 +134,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("soft-texgen-not-modelled", state::kTexGen),
       drawn("mesa-clip-temps-uninitialised", state::kClipTempsUnwritten),
       drawn("soft-line-smooth-not-modelled", state::kLineSmooth),
+      drawn("soft-point-smooth-not-modelled", state::kPointSmooth),
       // Row 44: the alpha of vertices sent before the glColor3, and so of the current colour too.
       {"mesa-color3-shrink-in-primitive", state::kColorShrinkInPrimitive,
        [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {

@@ -1288,6 +1288,9 @@ void Context::flush_primitive() {
   const bool feedback = render_mode_ == GL_FEEDBACK;
   const bool lines = prim_mode_ == GL_LINES || prim_mode_ == GL_LINE_STRIP || prim_mode_ == GL_LINE_LOOP;
   if (!feedback && lines && (elements_.empty() ? verts_.size() : elements_.size()) >= 2 && enabled_state(GL_LINE_SMOOTH) == 1) deviations_.insert(kLineSmooth);
+  if (!feedback && prim_mode_ == GL_POINTS && !(elements_.empty() ? verts_.empty() : elements_.empty()) &&
+      enabled_state(GL_POINT_SMOOTH) == 1)
+    deviations_.insert(kPointSmooth);
   std::vector<raster::Triangle>& tris = triangles_;
   tris.clear();
 

@@ -32,6 +32,9 @@ inline constexpr const char* kClipTempsUnwritten =
 inline constexpr const char* kLineSmooth =
     "GL_LINE_SMOOTH is not modelled: lines are drawn aliased, where llvmpipe draws them wider "
     "through its draw module's antialiasing stage (a zero-length one as a dot)";
+inline constexpr const char* kPointSmooth =
+    "GL_POINT_SMOOTH is not modelled: points are drawn aliased, where llvmpipe draws them through its "
+    "draw module's antialiasing stage";
 inline constexpr const char* kZeroNormal = "zero-length normal under GL_NORMALIZE: only ambient and emission remain";
 // Not modelled, reported when met: what Mesa does there is not soft's picture or feedback.
 inline constexpr const char* kNonfiniteDrawPixels =
