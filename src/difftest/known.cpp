@@ -20,11 +20,12 @@ bool any_call(const Stream& s, int upto, Pred pred) {
 bool is(const Call& c, const char* name) { return name_of(c) == name; }
 
 // The last call that can have caused m: a feedback buffer is written until the next
-// glFeedbackBuffer replaces it (-1: the end), other kinds show at their call.
-int reach(const Stream& s, const Mismatch& m) {
+// glFeedbackBuffer replaces it (-1: the end; one Mesa refused replaces nothing), other kinds show
+// at their call.
+int reach(const Stream& s, const Mismatch& m, const SideResult& mesa) {
   if (m.kind != "feedback" || m.call < 0) return m.call;
   for (size_t i = size_t(m.call) + 1; i < s.size(); ++i)
-    if (is(s[i], "glFeedbackBuffer")) return int(i) - 1;
+    if (is(s[i], "glFeedbackBuffer") && !(i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR)) return int(i) - 1;
   return -1;
 }
 
@@ -32,7 +33,7 @@ int reach(const Stream& s, const Mismatch& m) {
 // error of the call itself, which both sides must raise alike.
 bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& mesa,
                         bool (*call_matches)(const Call&)) {
-  return any_call(s, reach(s, m), [&](const Call& c, size_t i) {
+  return any_call(s, reach(s, m, mesa), [&](const Call& c, size_t i) {
     return call_matches(c) && i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR &&
            !(m.kind == "error" && int(i) == m.call);
   });
@@ -73,8 +74,8 @@ const std::vector<KnownDeviation>& known_deviations() {
        }},
       {"mesa-array-element-out-of-range",
        "Mesa reads outside the client arrays for glArrayElement with an index they do not hold (no error is defined); the values it passes on are garbage",
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
-         return any_call(s, reach(s, m), [](const Call& c, size_t) { return is(c, "glArrayElement") && c.args[0].num < 0; });
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult&) {
+         return any_call(s, reach(s, m, mesa), [](const Call& c, size_t) { return is(c, "glArrayElement") && c.args[0].num < 0; });
        }},
       {"soft-null-array-pointer",
        "an enabled array that was never given a pointer: Mesa reads address 0 (garbage or a crash), soft reads nothing and records GL_INVALID_OPERATION",
