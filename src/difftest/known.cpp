@@ -144,6 +144,14 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kColorShrinkInPrimitive) !=
                             soft.deviations.end();
        }},
+      // Row 47: the call's own error, and what was not drawn.
+      {"soft-drawpixels-format-not-implemented", state::kDrawPixelsFormat,
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         const bool kind = m.kind == "pixels" || m.kind == "readpixels" ||
+                           (m.kind == "error" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glDrawPixels");
+         return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kDrawPixelsFormat) !=
+                            soft.deviations.end();
+       }},
       // Row 46: what was drawn or fed back, and the count glRenderMode returns.
       {"nonfinite-vertex", state::kNonfiniteVertex,
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {

@@ -1343,11 +1343,21 @@ void Context::flush_primitive() {
   if (triangles) {
     outside_.resize(verts_.size());
     window_.resize(verts_.size());
+    // Vertices past the last whole primitive are dropped before Mesa's draw module looks for
+    // vertices outside the view volume (u_trim_pipe_prim): they do not choose the quads' split.
+    // (Drawn from elements, every fetched vertex counts, as measured so far.)
+    size_t whole = verts_.size();
+    if (elements_.empty()) {
+      if (prim_mode_ == GL_TRIANGLES) whole -= whole % 3;
+      else if (prim_mode_ == GL_QUADS) whole -= whole % 4;
+      else if (prim_mode_ == GL_QUAD_STRIP) whole = whole < 4 ? 0 : whole - whole % 2;
+      else if (whole < 3) whole = 0;
+    }
     for (size_t i = 0; i < verts_.size(); ++i)
       if ((outside_[i] = raster::outside_planes(verts_[i].clip)) == 0) {
         window_[i] = raster::map_to_window(verts_[i].clip, rs);
         window_[i].fog = verts_[i].fog;
-      } else {
+      } else if (i < whole) {
         any_outside = true;
       }
   }

@@ -45,6 +45,9 @@ inline constexpr const char* kColorShrinkInPrimitive =
 inline constexpr const char* kNonfiniteVertex =
     "a line, quad or polygon vertex with a NaN or infinite position or normal: undefined in GL; Mesa's clipper "
     "and lighting keep remnants soft does not reproduce";
+inline constexpr const char* kDrawPixelsFormat =
+    "glDrawPixels with a format or type soft does not implement (depth, stencil, colour index, the integer and "
+    "packed types): GL_INVALID_OPERATION and nothing drawn, where Mesa draws";
 inline constexpr const char* kTexGen =
     "texture coordinate generation (GL_TEXTURE_GEN_*) is not modelled: fed-back texture coordinates are the current ones";
 

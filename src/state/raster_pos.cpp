@@ -297,6 +297,7 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
     if (said.insert({format, type}).second)
       std::fprintf(stderr, "ffcompat: glDrawPixels with format 0x%04X and type 0x%04X is not implemented "
                            "(GL_INVALID_OPERATION)\n", format, type);
+    deviations_.insert(kDrawPixelsFormat);
     return error(GL_INVALID_OPERATION);
   }
   const glm::dvec4& rp = raster_pos_.window;
