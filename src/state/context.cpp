@@ -860,6 +860,8 @@ void Context::Color(double r, double g, double b, double a, int components) {
   // flush) leaves alpha as the last glColor4 set it. Measured call by call; tested on generated
   // streams (ColorMaterialStreams).
   if (!spec_) {
+    if (in_begin_ && prim_mode_ == GL_LINE_LOOP && components > color_size_ && !verts_.empty())
+      deviations_.insert(kLineLoopWrap);  // docs/deviations.md row 48
     if (components > color_size_) color_size_ = color_active_ = components;
     else if (components < color_active_) {
       color_active_ = components;

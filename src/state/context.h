@@ -48,6 +48,9 @@ inline constexpr const char* kNonfiniteVertex =
 inline constexpr const char* kDrawPixelsFormat =
     "glDrawPixels with a format or type soft does not implement (depth, stencil, colour index, the integer and "
     "packed types): GL_INVALID_OPERATION and nothing drawn, where Mesa draws";
+inline constexpr const char* kLineLoopWrap =
+    "a glColor inside glBegin(GL_LINE_LOOP) that grows the colour attribute after the first vertex: Mesa's vbo "
+    "wraps the primitive and loses the loop's closing segment";
 inline constexpr const char* kTexGen =
     "texture coordinate generation (GL_TEXTURE_GEN_*) is not modelled: fed-back texture coordinates are the current ones";
 

@@ -273,6 +273,20 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (!known_format(format) || !known_type(type)) return error(GL_INVALID_ENUM);
+  // A packed type needs a format of its number of components, as for glReadPixels (GL 2.1 section
+  // 3.6.4): GL_RGB for the 3-component types, GL_RGBA or GL_BGRA for the others (measured on Mesa,
+  // before anything else happens, in feedback mode too).
+  switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: case GL_UNSIGNED_BYTE_2_3_3_REV: case GL_UNSIGNED_SHORT_5_6_5:
+    case GL_UNSIGNED_SHORT_5_6_5_REV:
+      if (format != GL_RGB) return error(GL_INVALID_OPERATION);
+      break;
+    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_4_4_4_4_REV: case GL_UNSIGNED_SHORT_5_5_5_1:
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: case GL_UNSIGNED_INT_8_8_8_8: case GL_UNSIGNED_INT_8_8_8_8_REV:
+    case GL_UNSIGNED_INT_10_10_10_2: case GL_UNSIGNED_INT_2_10_10_10_REV:
+      if (format != GL_RGBA && format != GL_BGRA) return error(GL_INVALID_OPERATION);
+      break;
+  }
   if (render_mode_ == GL_FEEDBACK) {
     // Feedback gets the raster position as a vertex after GL_DRAW_PIXEL_TOKEN (GL 2.1 section 5.3),
     // its texture coordinates the texture matrix's last column (the current ones are (0, 0, 0, 1)).
