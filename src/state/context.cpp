@@ -1297,9 +1297,7 @@ void Context::flush_primitive() {
   tris.clear();
 
   auto put = [&](double x) { feedback_put(x); };
-  if (feedback && (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE))
-    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
-      if (enabled_state(gen) == 1) deviations_.insert(kTexGen);
+  if (feedback) note_texgen_in_feedback();
   // A primitive as feedback reports it. A clipped triangle goes back as Mesa's clipper emits it
   // (emit_poly in draw_pipe_clip.c): a fan of triangles (v[i], v[i+1], v[0]), the first vertex
   // last, also when the clipped polygon is a triangle.
@@ -1519,6 +1517,13 @@ void Context::flush_primitive() {
 }
 
 // ---------------------------------------------------------------- feedback and read-back
+
+// Fed-back texture coordinates are the current ones: texture generation is not modelled.
+void Context::note_texgen_in_feedback() {
+  if (feedback_type_ != GL_3D_COLOR_TEXTURE && feedback_type_ != GL_4D_COLOR_TEXTURE) return;
+  for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
+    if (enabled_state(gen) == 1) deviations_.insert(kTexGen);
+}
 
 void Context::feedback_put(double x) {
   if (feedback_count_ < feedback_size_) feedback_[feedback_count_] = GLfloat(x);

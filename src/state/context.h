@@ -362,6 +362,7 @@ class Context {
   GLenum feedback_type_ = GL_2D;
   bool feedback_overflow_ = false;
   void feedback_put(double x);  // the next value, or the overflow noted
+  void note_texgen_in_feedback();  // names kTexGen when it changes what feedback would hold
   raster::ClipTemps clip_temps_;  // Mesa's clipper's temporaries, as feedback sees them
   GLint pack_alignment_ = 4, unpack_alignment_ = 4;
   std::map<GLenum, GLint> pixel_store_;  // the other glPixelStorei values, recorded and reported (0 by default)

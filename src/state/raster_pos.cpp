@@ -291,9 +291,7 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
     // Feedback gets the raster position as a vertex after GL_DRAW_PIXEL_TOKEN (GL 2.1 section 5.3),
     // its texture coordinates the texture matrix's last column (the current ones are (0, 0, 0, 1)).
     if (!raster_pos_.valid) return;
-    for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
-      if (enabled_state(gen) == 1 && (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE))
-        deviations_.insert(kTexGen);
+    note_texgen_in_feedback();
     feedback_put(GL_DRAW_PIXEL_TOKEN);
     const glm::dvec4& p = raster_pos_.window;
     feedback_put(p.x), feedback_put(p.y);
