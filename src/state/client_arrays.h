@@ -59,7 +59,7 @@ inline const uint8_t* element(const ClientArray& a, GLint i) {
 }
 
 // The smallest and largest of n indices (n > 0): a draw of a million indices reads them all
-// before anything else (shaded_draw.cpp).
+// before anything else (draw.cpp).
 void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi);
 
 }  // namespace ffc::state

@@ -124,7 +124,7 @@ class Context {
   void GetDoublev(GLenum pname, GLdouble* params);
   void GetFloatv(GLenum pname, GLfloat* params);
   void GetIntegerv(GLenum pname, GLint* params);
-  void GetBooleanv(GLenum pname, GLboolean* params);  // get_table.cpp, as GetPointerv
+  void GetBooleanv(GLenum pname, GLboolean* params);
   void GetPointerv(GLenum pname, void** params);
 
   void MatrixMode(GLenum mode);
@@ -229,20 +229,23 @@ class Context {
   raster::State raster_state() const;
   raster::Workers& workers();
   void prepare_lighting();
-  // Colour material as Mesa tracks it (context.cpp, before Context::Color).
+  // Colour material as Mesa tracks it (light.cpp).
   void update_color_material();
   void copy_pending();
   void flush_current();
   void flush_stored();
   void begin_draw();
   void feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const;
+  void feedback_primitive(GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped,
+                          const raster::State& rs, bool offset_stage);
   template <class Draw>
   void with_positions(Draw draw);  // the vertex array, or Mesa's stand-in (no std::function: no allocation)
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void set_color_varies(bool v);
   bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
-  void flush_primitive();
+  void flush_primitive();  // primitive.cpp, through its Assembly
+  friend class Assembly;
 
   raster::Framebuffer fb_;
   // glClear waits here until something draws or reads: a triangle list clears band by band, on
@@ -258,7 +261,7 @@ class Context {
   bool depth_test_ = false, cull_face_ = false;
   bool fog_ = false, offset_fill_ = false;
   // Capabilities and client arrays GL knows that the pipeline does not model, by name; missing
-  // ones have their default (context.cpp's table).
+  // ones have their default (enable.cpp's table).
   std::map<GLenum, bool> other_enables_;
   GLenum shade_model_ = GL_SMOOTH, front_face_ = GL_CCW, cull_mode_ = GL_BACK, depth_func_ = GL_LESS;
   GLenum cm_face_ = GL_FRONT_AND_BACK, cm_mode_ = GL_AMBIENT_AND_DIFFUSE;

@@ -3,8 +3,8 @@
 // implementation limits, the buffers' configuration), reported as Mesa 22.3's compatibility
 // context (llvmpipe through OSMesa, RGBA8 with a 24-bit depth buffer and no stencil) reports them
 // in its default state, so that every glGet name of GL <= 2.1 that Mesa answers has an answer
-// here; plus the values derived from modelled state that context.cpp's switch does not list (the
-// transposed matrices, the scissor box). Also glGetBooleanv and glGetPointerv.
+// here; plus the values derived from modelled state that get.cpp's switch does not list (the
+// transposed matrices, the scissor box).
 //
 // The names are Mesa's main/get_hash_params.py entries that its compatibility API offers and
 // whose enums belong to GL 1.0 to 2.1; the values are what Mesa returned (tests/state/
@@ -247,32 +247,6 @@ int Context::get_table_values(GLenum pname, GLdouble* out, int& normalized) {
   std::copy(c->values, c->values + c->count, out);
   normalized = c->conv == Normalized ? kFromFloat : kRound;
   return c->count;
-}
-
-void Context::GetBooleanv(GLenum pname, GLboolean* out) {
-  GLdouble v[16];
-  int normalized;
-  const int n = get_values(pname, v, normalized);
-  // get.c: every type becomes GL_TRUE when non-zero; the float-held values (colours, matrices)
-  // are tested as the floats Mesa keeps.
-  for (int k = 0; k < n; ++k)
-    out[k] = (normalized == kFromFloat ? float(v[k]) != 0.0f : v[k] != 0.0) ? GL_TRUE : GL_FALSE;
-}
-
-void Context::GetPointerv(GLenum pname, void** out) {
-  if (!outside_begin_end()) return;  // the pointer left as it was, as Mesa leaves it
-  switch (pname) {
-    case GL_VERTEX_ARRAY_POINTER: *out = const_cast<void*>(vertex_array_.pointer); return;
-    case GL_NORMAL_ARRAY_POINTER: *out = const_cast<void*>(normal_array_.pointer); return;
-    case GL_COLOR_ARRAY_POINTER: *out = const_cast<void*>(color_array_.pointer); return;
-    // Arrays this pipeline has no pointer call for: never set, null as in GL's default state.
-    case GL_INDEX_ARRAY_POINTER: case GL_TEXTURE_COORD_ARRAY_POINTER: case GL_EDGE_FLAG_ARRAY_POINTER:
-    case GL_FOG_COORD_ARRAY_POINTER: case GL_SECONDARY_COLOR_ARRAY_POINTER: case GL_SELECTION_BUFFER_POINTER:
-      *out = nullptr;
-      return;
-    case GL_FEEDBACK_BUFFER_POINTER: *out = feedback_; return;
-  }
-  error(GL_INVALID_ENUM);
 }
 
 }  // namespace ffc::state

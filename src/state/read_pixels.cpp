@@ -1,6 +1,8 @@
 // glReadPixels: which formats and types it takes, and how it packs them (see read_pixels.h).
 #include "state/read_pixels.h"
 
+#include "state/context.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -291,6 +293,57 @@ void pack_pixels(const raster::Framebuffer& fb, int x, int y, int w, int h, GLen
     for (int i = i0; i < i1; ++i)
       for (size_t k = 0; k < per_pixel; ++k)
         swap_bytes(base + size_t(j) * stride + size_t(i) * pixel + k * elem, elem);
+}
+
+// ---------------------------------------------------------------- the entry points
+
+void Context::PixelStorei(GLenum pname, GLint param) {
+  if (!outside_begin_end()) return;
+  switch (pname) {
+    case GL_PACK_ALIGNMENT: case GL_UNPACK_ALIGNMENT:
+      if (param != 1 && param != 2 && param != 4 && param != 8) return error(GL_INVALID_VALUE);
+      (pname == GL_PACK_ALIGNMENT ? pack_alignment_ : unpack_alignment_) = param;
+      return;
+    case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_SWAP_BYTES: case GL_UNPACK_LSB_FIRST:
+      pixel_store_[pname] = param != 0;
+      return;
+    case GL_PACK_ROW_LENGTH: case GL_PACK_IMAGE_HEIGHT: case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS:
+    case GL_PACK_SKIP_IMAGES: case GL_UNPACK_ROW_LENGTH: case GL_UNPACK_IMAGE_HEIGHT: case GL_UNPACK_SKIP_ROWS:
+    case GL_UNPACK_SKIP_PIXELS: case GL_UNPACK_SKIP_IMAGES:
+      // Recorded and reported; glReadPixels honours the GL_PACK_* ones (read_pixels.cpp).
+      if (param < 0) return error(GL_INVALID_VALUE);
+      pixel_store_[pname] = param;
+      return;
+  }
+  error(GL_INVALID_ENUM);
+}
+
+void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
+  if (!outside_begin_end()) return;
+  validate_matrices();
+  if (w < 0 || h < 0) return error(GL_INVALID_VALUE);  // Mesa checks the size before the format
+  if (const GLenum e = read_pixels_error(format, type)) return error(e);
+  flush_clear();
+  auto store = [this](GLenum p) {
+    const auto it = pixel_store_.find(p);
+    return it == pixel_store_.end() ? 0 : it->second;
+  };
+  PackState pack;
+  pack.alignment = pack_alignment_;
+  pack.row_length = store(GL_PACK_ROW_LENGTH), pack.skip_rows = store(GL_PACK_SKIP_ROWS);
+  pack.skip_pixels = store(GL_PACK_SKIP_PIXELS), pack.swap_bytes = store(GL_PACK_SWAP_BYTES) != 0;
+  pack_pixels(fb_, x, y, w, h, format, type, pack, pixels);
+}
+
+void Context::read_top_down(uint8_t* out) {
+  flush_clear();
+  const size_t row = size_t(fb_.width) * 4;
+  raster::Workers& w = workers();
+  const int shares = 4 * w.size();
+  w.run([&](int share) {
+    for (int y = fb_.height * share / shares; y < fb_.height * (share + 1) / shares; ++y)  // GL's row 0 is the bottom one
+      std::memcpy(out + size_t(y) * row, &fb_.color[size_t(fb_.height - 1 - y) * row], row);
+  }, shares);
 }
 
 }  // namespace ffc::state

@@ -5,14 +5,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "state/context.h"
+#include "state/gl_rules.h"
 
 namespace ffc::state {
 namespace {
 
 Context* C() { return Context::current(); }
 
-// Mesa's INT_TO_FLOAT (main/macros.h): GLint [-2^31, 2^31-1] onto [-1, 1], (2i + 1) / (2^32 - 2).
-GLfloat int_to_float(GLint i) { return GLfloat((2.0f * GLfloat(i) + 1.0f) * (1.0f / 4294967294.0)); }
 #define FWD(call) \
   if (Context* ctx_ = C()) ctx_->call
 

@@ -1,0 +1,108 @@
+// Client vertex arrays (GL 2.1 section 2.8): the pointers, glArrayElement, and the checks every
+// draw from arrays makes (readable arrays, memory, the vertex array's stand-in).
+#include <unistd.h>
+
+#include "state/client_arrays.h"
+#include "state/context.h"
+
+namespace ffc::state {
+
+
+// The array pointers check as Mesa's varray.c does: the stride first, then the type, then the size.
+// A negative stride alone is recorded by Mesa and then the pointer is set all the same (stride -1
+// read back); ours ignores the call, as GL 2.1 section 2.5 says.
+void Context::VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
+  if (!outside_begin_end()) return;
+  if (stride < 0) return error(GL_INVALID_VALUE);
+  if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) return error(GL_INVALID_ENUM);
+  if (size < 2 || size > 4) return error(GL_INVALID_VALUE);
+  vertex_array_ = {vertex_array_.enabled, size, type, stride, p};
+}
+
+void Context::NormalPointer(GLenum type, GLsizei stride, const void* p) {
+  if (!outside_begin_end()) return;
+  if (stride < 0) return error(GL_INVALID_VALUE);
+  if (type != GL_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE)
+    return error(GL_INVALID_ENUM);
+  normal_array_ = {normal_array_.enabled, 3, type, stride, p};
+}
+
+void Context::ColorPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
+  if (!outside_begin_end()) return;
+  if (stride < 0) return error(GL_INVALID_VALUE);
+  if (type_size(type) == 0) return error(GL_INVALID_ENUM);
+  if (size != 3 && size != 4) return error(GL_INVALID_VALUE);
+  color_array_ = {color_array_.enabled, size, type, stride, p};
+}
+
+void Context::fetch_vertex(GLint i, Fixed f) {
+  if (normal_array_.enabled) {
+    const uint8_t* p = element(normal_array_, i);
+    Normal(read_component(p, normal_array_.type, 0, f), read_component(p, normal_array_.type, 1, f),
+           read_component(p, normal_array_.type, 2, f));
+  }
+  if (color_array_.enabled) {
+    const uint8_t* p = element(color_array_, i);
+    const GLenum t = color_array_.type;
+    Color(read_component(p, t, 0, f), read_component(p, t, 1, f), read_component(p, t, 2, f),
+          color_array_.size == 4 ? read_component(p, t, 3, f) : 1.0, color_array_.size);
+  }
+  if (vertex_array_.enabled) {
+    const uint8_t* p = element(vertex_array_, i);
+    glm::dvec4 v(0, 0, 0, 1);
+    for (int k = 0; k < vertex_array_.size; ++k) v[k] = read_component(p, vertex_array_.type, k, Fixed::Raw);
+    process_vertex(v);
+  }
+}
+
+// An enabled array that was never given a pointer: GL 2.1 leaves reading it undefined and Mesa
+// reads address 0 (a crash); ours reads nothing: GL_INVALID_OPERATION, as core profiles say of a
+// draw from no buffer.
+bool Context::arrays_readable() {
+  for (const ClientArray* a : {&vertex_array_, &normal_array_, &color_array_})
+    if (a->enabled && !a->pointer) return error(GL_INVALID_OPERATION), false;
+  return true;
+}
+
+void Context::ArrayElement(GLint i) {
+  // GL 2.1 defines no error for a negative index, and Mesa raises none (it reads before the
+  // arrays); ours ignores the call.
+  if (i < 0 || !arrays_readable()) return;
+  if (!in_begin_) {
+    // Outside glBegin/glEnd the element still sets the current normal and colour (its vertex has
+    // no effect), as in Mesa.
+    const bool vertex = vertex_array_.enabled;
+    vertex_array_.enabled = false;
+    fetch_vertex(i, element_fixed());
+    vertex_array_.enabled = vertex;
+    return;
+  }
+  fetch_vertex(i, element_fixed());
+}
+
+// A draw from arrays: pending values copied first (Mesa's FLUSH_FOR_DRAW); the colour varies
+// per vertex when it comes from an array.
+void Context::begin_draw() {
+  flush_stored();
+  set_color_varies(color_array_.enabled);
+}
+
+void Context::set_color_varies(bool v) {
+  if (color_varies_ != v) color_varies_ = v, constants_dirty_ = true;
+}
+
+// Whether a draw of n vertices (and as many indices) fits in memory: each costs at most this many
+// bytes on any path. Over half of the machine's memory is GL_OUT_OF_MEMORY, before anything is
+// allocated: a vector of billions of vertices would fail, or worse, be granted and then touched
+// page by page until the kernel kills the process.
+bool Context::fits_in_memory(uint64_t n) {
+  constexpr uint64_t kBytesPerVertex = sizeof(raster::Vertex) + sizeof(raster::WindowVertex) + 64;
+  static const uint64_t budget = [] {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) / 2 : uint64_t(1) << 32;
+  }();
+  if (n <= budget / kBytesPerVertex) return true;
+  error(GL_OUT_OF_MEMORY);
+  return false;
+}
+}  // namespace ffc::state

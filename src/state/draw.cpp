@@ -1,0 +1,168 @@
+// glDrawArrays and glDrawElements (GL 2.1 section 2.8): validation, then the choice of path: the
+// triangle-list path for GL_TRIANGLES while rendering in float, the general path (vertex by
+// vertex, then primitive assembly) for everything else.
+#include <immintrin.h>
+
+#include <algorithm>
+
+// GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
+// reports wherever they are inlined.
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "state/client_arrays.h"
+#include "state/context.h"
+#include "state/gl_rules.h"
+
+namespace ffc::state {
+
+namespace {
+constexpr GLint kParallelVertices = 8192;  // below this, starting a thread costs more than it saves
+}  // namespace
+
+
+// With the vertex array disabled GL draws nothing. Mesa draws all the same, each vertex at the
+// current position, which its vbo module never updates from glVertex: the object-space origin
+// (0, 0, 0, 1) every time, the other attributes from their arrays or current values. The default
+// mode does so too (a constant array of the origin stands in for the positions); spec mode draws
+// nothing.
+template <class Draw>
+void Context::with_positions(Draw draw) {
+  if (vertex_array_.enabled) return draw();
+  if (spec_) return;
+  static const float kOrigin[4] = {0, 0, 0, 1};
+  const ClientArray kept = vertex_array_;
+  vertex_array_ = {true, 4, GL_FLOAT, 0, kOrigin, true};
+  draw();
+  vertex_array_ = kept;
+}
+
+// glDrawArrays and glDrawElements check as Mesa's draw_validate.c does: the count, then the mode,
+// then the index type.
+void Context::DrawArrays(GLenum mode, GLint first, GLsizei count) {
+  if (!outside_begin_end()) return;
+  validate_matrices();  // before any argument is checked, as Mesa's draws
+  if (count < 0) return error(GL_INVALID_VALUE);
+  if (!valid_primitive(mode)) return error(primitive_error(mode));
+  with_positions([&] { draw_arrays(mode, first, count); });
+}
+
+void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
+  // A negative first is no error in GL 2.1 nor in Mesa (which then reads before the arrays); ours
+  // draws nothing.
+  if (first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
+  begin_draw();
+  prim_mode_ = mode;
+  verts_.clear();
+  if (shaded_path(mode)) {
+    shade_range(first, count);
+    return draw_shaded(nullptr, size_t(count) / 3);
+  }
+  const CurrentValues kept = current_values();
+  if (count >= kParallelVertices && threads_ > 1)
+    fetch_range(first, count);
+  else
+    for (GLint i = first; i < first + count; ++i) fetch_vertex(i, draw_fixed());
+  restore(kept);
+  flush_primitive();
+}
+
+void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (!outside_begin_end()) return;
+  validate_matrices();  // before any argument is checked, as Mesa's draws
+  if (count < 0) return error(GL_INVALID_VALUE);
+  if (!valid_primitive(mode)) return error(primitive_error(mode));
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return error(GL_INVALID_ENUM);
+  with_positions([&] { draw_elements(mode, count, type, indices); });
+}
+
+void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (!indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
+  begin_draw();
+  prim_mode_ = mode;
+  verts_.clear();
+  // Each array element in the indices' range is transformed and lit once, however often the
+  // indices name it (a post-transform cache covering the whole draw).
+  const uint8_t* p = static_cast<const uint8_t*>(indices);
+  uint32_t lo = UINT32_MAX, hi = 0;
+  if (type == GL_UNSIGNED_INT && count > 0 && shaded_path(mode)) {
+    // The triangle-list path reads 32-bit indices in place when they start at 0.
+    const auto* u = static_cast<const uint32_t*>(indices);
+    index_range(u, size_t(count), lo, hi);
+    if (lo == 0 && !fits_in_memory(uint64_t(hi) + 1)) return;
+    if (lo == 0) {
+      shade_range(0, GLint(hi) + 1);
+      return draw_shaded(u, size_t(count) / 3);
+    }
+  }
+  elements_.resize(size_t(count));
+  for (GLsizei i = 0; i < count; ++i) elements_[i] = uint32_t(read_component(p, type, i, Fixed::Raw));
+  if (count > 0) index_range(elements_.data(), elements_.size(), lo, hi);
+  if (count > 0 && !fits_in_memory(uint64_t(hi - lo) + 1)) return elements_.clear();
+  if (count > 0 && shaded_path(mode)) {
+    shade_range(GLint(lo), GLint(hi - lo + 1));
+    for (uint32_t& e : elements_) e -= lo;
+    draw_shaded(elements_.data(), size_t(count) / 3);
+    elements_.clear();
+    return;
+  }
+  if (count > 0) {
+    const CurrentValues kept = current_values();
+    if (hi - lo + 1 >= kParallelVertices && threads_ > 1)
+      fetch_range(GLint(lo), GLint(hi - lo + 1));
+    else
+      for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i), draw_fixed());
+    restore(kept);
+    for (uint32_t& e : elements_) e -= lo;
+  }
+  flush_primitive();
+  elements_.clear();
+}
+// Sixteen at a time with AVX-512 where the CPU has it, else four at a time in SSE2 (which
+// compares signed: the top bit is flipped first).
+namespace {
+__attribute__((target("avx512f"))) void index_range_wide(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
+  __m512i vlo = _mm512_set1_epi32(-1), vhi = _mm512_setzero_si512();
+  size_t i = 0;
+  for (; i + 16 <= n; i += 16) {
+    const __m512i v = _mm512_loadu_si512(u + i);
+    vlo = _mm512_min_epu32(vlo, v), vhi = _mm512_max_epu32(vhi, v);
+  }
+  lo = _mm512_reduce_min_epu32(vlo), hi = _mm512_reduce_max_epu32(vhi);
+  for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
+}
+}  // namespace
+
+void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
+  static const bool wide = __builtin_cpu_supports("avx512f");
+  if (wide) return index_range_wide(u, n, lo, hi);
+  const __m128i flip = _mm_set1_epi32(INT32_MIN);
+  __m128i vlo = _mm_set1_epi32(INT32_MAX), vhi = _mm_set1_epi32(INT32_MIN);
+  size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    const __m128i v = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(u + i)), flip);
+    const __m128i less = _mm_cmplt_epi32(v, vlo), more = _mm_cmpgt_epi32(v, vhi);
+    vlo = _mm_or_si128(_mm_and_si128(less, v), _mm_andnot_si128(less, vlo));
+    vhi = _mm_or_si128(_mm_and_si128(more, v), _mm_andnot_si128(more, vhi));
+  }
+  alignas(16) uint32_t l[4], h[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(l), _mm_xor_si128(vlo, flip));
+  _mm_store_si128(reinterpret_cast<__m128i*>(h), _mm_xor_si128(vhi, flip));
+  lo = UINT32_MAX, hi = 0;
+  for (int k = 0; k < 4 && i >= 4; ++k) lo = std::min(lo, l[k]), hi = std::max(hi, h[k]);
+  for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
+}
+
+bool Context::shaded_path(GLenum mode) const {
+  // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the
+  // triangle list's kernels have neither a fog coordinate nor a depth offset.
+  return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float &&
+         !fog_ && !offset_fill_;
+}
+
+void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
+  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers(), bins_, pending_clear_);
+  pending_clear_ = {};
+}
+
+}  // namespace ffc::state

@@ -1,0 +1,87 @@
+// Immediate mode (GL 2.1 section 2.6): glBegin / glVertex / glEnd and the current normal and
+// colour. GL_TRIANGLES while rendering in float keeps the vertices as sent and lights them
+// together at glEnd on the triangle-list path; every other primitive goes vertex by vertex.
+#include "state/context.h"
+#include "state/gl_rules.h"
+
+namespace ffc::state {
+
+void Context::Normal(double x, double y, double z) { normal_ = {x, y, z}; }
+
+void Context::Color(double r, double g, double b, double a, int components) {
+  // glColor3 sets alpha to 1 (GL 2.1 section 2.7). Mesa's vbo keeps the colour attribute's size and
+  // active size between flushes: a glColor3 that shrinks the active size fills alpha with 1, but
+  // one at active size 3 in an attribute of size 4 (glColor4, glColor3, glColor4 since the last
+  // flush) leaves alpha as the last glColor4 set it. Measured call by call; tested on generated
+  // streams (ColorMaterialStreams).
+  if (!spec_) {
+    if (in_begin_ && prim_mode_ == GL_LINE_LOOP && components > color_size_ && !verts_.empty())
+      deviations_.insert(kLineLoopWrap);  // docs/deviations.md row 48
+    if (components > color_size_) color_size_ = color_active_ = components;
+    else if (components < color_active_) {
+      color_active_ = components;
+      if (in_begin_) deviations_.insert(kColorShrinkInPrimitive);  // docs/deviations.md row 44
+    }
+    else if (components == 3) a = color_.a;
+  }
+  color_ = {r, g, b, a};
+  if (in_begin_ && !color_varies_) color_varies_ = true, constants_dirty_ = true;
+  if (!spec_) return;  // tracked at the next flush (see update_color_material)
+  flushed_color_ = color_;  // GL 2.1: tracked at once
+  update_color_material();
+}
+void Context::Vertex(double x, double y, double z, double w) {
+  if (!in_begin_) return;  // outside glBegin/glEnd a vertex has no effect (undefined in GL)
+  process_vertex({x, y, z, w});
+}
+
+void Context::Begin(GLenum mode) {
+  if (in_begin_) return error(GL_INVALID_OPERATION);
+  validate_matrices();  // Mesa validates its state before it checks the mode
+  if (!valid_primitive(mode)) return error(primitive_error(mode));
+  flush_stored();
+  set_color_varies(false);
+  vertices_kept_ = !spec_;
+  in_begin_ = true;
+  prim_mode_ = mode;
+  verts_.clear();
+  // Triangles in immediate mode take the triangle-list path: the vertices are kept as sent and
+  // lit together at glEnd, unless a glMaterial between them changes the lighting (undefer()).
+  deferred_ = shaded_path(mode);
+  deferred_pos_.clear(), deferred_normal_.clear(), deferred_color_.clear();
+}
+
+void Context::undefer() {
+  if (!deferred_) return;
+  deferred_ = false;
+  for (size_t i = 0; i < deferred_pos_.size(); ++i) {
+    const glm::dvec3 normal = normal_;
+    const glm::dvec4 color = color_;
+    // As they were at that glVertex (what was not kept is not read).
+    if (!deferred_normal_.empty()) normal_ = deferred_normal_[i];
+    if (!deferred_color_.empty()) color_ = deferred_color_[i];
+    process_vertex(glm::dvec4(deferred_pos_[i]));
+    normal_ = normal, color_ = color;
+  }
+}
+
+void Context::End() {
+  if (!in_begin_) return error(GL_INVALID_OPERATION);
+  in_begin_ = false;
+  if (!deferred_) {
+    flush_primitive();
+    return flush_stored();
+  }
+  deferred_ = false;
+  // The kept vertices as client arrays for the triangle-list path (no GL call can change the
+  // arrays between glBegin and glEnd, so borrowing them is safe).
+  const ClientArray arrays[3] = {vertex_array_, normal_array_, color_array_};
+  vertex_array_ = {true, 4, GL_FLOAT, sizeof(glm::vec4), deferred_pos_.data()};
+  normal_array_ = {!deferred_normal_.empty(), 3, GL_DOUBLE, sizeof(glm::dvec3), deferred_normal_.data()};
+  color_array_ = {!deferred_color_.empty(), 4, GL_DOUBLE, sizeof(glm::dvec4), deferred_color_.data()};
+  shade_range(0, GLint(deferred_pos_.size()));
+  vertex_array_ = arrays[0], normal_array_ = arrays[1], color_array_ = arrays[2];
+  draw_shaded(nullptr, deferred_pos_.size() / 3);
+  flush_stored();
+}
+}  // namespace ffc::state

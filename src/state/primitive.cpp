@@ -1,0 +1,259 @@
+// Primitive assembly on the general path (GL 2.1 sections 2.6.1 and 2.15 to 3.5): the vertices
+// of a draw or a glBegin/glEnd assembled into points, lines and triangles, clipped, culled and
+// set up for the rasterizer, or handed to feedback (feedback.cpp).
+#include <array>
+#include <initializer_list>
+#include <vector>
+
+#include "state/context.h"
+#include "state/gl_rules.h"
+
+namespace ffc::state {
+
+// One flush of the general path: the settings fixed for its primitives and the steps that turn
+// the vertices in Context::verts_ (named through Context::elements_ when drawn from elements)
+// into triangles in Context::triangles_, lines and points drawn at once, or feedback.
+class Assembly {
+ public:
+  explicit Assembly(Context& c) : c_(c), rs_(c.raster_state()), feedback_(c.render_mode_ == GL_FEEDBACK) {}
+  void run();
+
+ private:
+  // A triangle's temporaries: its vertices as fed back, or as handed to the clipper.
+  struct Scratch {
+    raster::WindowVertex inside[3];
+    raster::Vertex prim[3];
+  };
+  size_t index(size_t i) const { return c_.elements_.empty() ? i : size_t(c_.elements_[i]); }
+  const raster::Vertex& at(size_t i) const { return c_.verts_[index(i)]; }
+  void note_smooth();
+  void map_inside();
+  void triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::vector<raster::Triangle>& out,
+                Scratch& scratch);
+  void line_or_point(std::initializer_list<size_t> idx, size_t provoking, GLenum kind);
+  void emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind);
+  void assemble(size_t n);
+  void triangles_on_threads(size_t n);
+
+  Context& c_;
+  const raster::State rs_;
+  const bool feedback_;
+  bool offset_stage_ = false;  // feedback through the offset stage of Mesa's draw module
+  bool any_outside_ = false;   // a vertex of a whole primitive lies outside the view volume
+  Scratch scratch_;
+  raster::Fixed<raster::Vertex, 2> prim_;
+};
+
+void Context::flush_primitive() {
+  if (render_mode_ != GL_SELECT) Assembly(*this).run();  // selection is not modelled: nothing is drawn
+  verts_.clear();
+}
+
+void Assembly::run() {
+  note_smooth();
+  c_.triangles_.clear();
+  if (feedback_) c_.note_texgen_in_feedback();
+  // Any of the three polygon offset enables puts the offset stage of Mesa's draw module in the
+  // feedback pipeline (Context::feedback_offset).
+  offset_stage_ = feedback_ && (c_.offset_fill_ || c_.enabled_state(GL_POLYGON_OFFSET_LINE) == 1 ||
+                                c_.enabled_state(GL_POLYGON_OFFSET_POINT) == 1);
+  if (c_.prim_mode_ >= GL_TRIANGLES) map_inside();
+  const size_t n = c_.elements_.empty() ? c_.verts_.size() : c_.elements_.size();
+  if (c_.prim_mode_ == GL_TRIANGLES && !feedback_ && c_.threads_ > 1 && n >= 3 * 4096) return triangles_on_threads(n);
+  assemble(n);
+  const std::vector<raster::Triangle>* list = &c_.triangles_;
+  if (!c_.triangles_.empty()) {
+    c_.flush_clear();
+    raster::draw_triangles(c_.fb_, &list, 1, rs_, c_.workers());
+  }
+}
+
+// Smooth lines and points are drawn aliased: named when a drawn primitive meets them.
+void Assembly::note_smooth() {
+  if (feedback_) return;
+  const bool any = !(c_.elements_.empty() ? c_.verts_.empty() : c_.elements_.empty());
+  const bool two = (c_.elements_.empty() ? c_.verts_.size() : c_.elements_.size()) >= 2;
+  const GLenum m = c_.prim_mode_;
+  if ((m == GL_LINES || m == GL_LINE_STRIP || m == GL_LINE_LOOP) && two && c_.enabled_state(GL_LINE_SMOOTH) == 1)
+    c_.deviations_.insert(kLineSmooth);
+  if (m == GL_POINTS && any && c_.enabled_state(GL_POINT_SMOOTH) == 1) c_.deviations_.insert(kPointSmooth);
+}
+
+// Most triangles lie inside the view volume: their vertices map to the window once, however many
+// triangles share them, and they skip clipping.
+void Assembly::map_inside() {
+  const std::vector<raster::Vertex>& verts = c_.verts_;
+  c_.outside_.resize(verts.size());
+  c_.window_.resize(verts.size());
+  // Vertices past the last whole primitive are dropped before Mesa's draw module looks for
+  // vertices outside the view volume (u_trim_pipe_prim): they do not choose the quads' split.
+  // (Drawn from elements, every fetched vertex counts, as measured so far.)
+  size_t whole = verts.size();
+  if (c_.elements_.empty()) {
+    const GLenum m = c_.prim_mode_;
+    if (m == GL_TRIANGLES) whole -= whole % 3;
+    else if (m == GL_QUADS) whole -= whole % 4;
+    else if (m == GL_QUAD_STRIP) whole = whole < 4 ? 0 : whole - whole % 2;
+    else if (whole < 3) whole = 0;
+  }
+  for (size_t i = 0; i < verts.size(); ++i)
+    if ((c_.outside_[i] = raster::outside_planes(verts[i].clip)) == 0) {
+      c_.window_[i] = raster::map_to_window(verts[i].clip, rs_);
+      c_.window_[i].fog = verts[i].fog;
+    } else if (i < whole) {
+      any_outside_ = true;
+    }
+}
+
+// One triangle: inside the view volume from the per-vertex window positions, otherwise clipped.
+// Safe to run on several threads at once when not in feedback mode (only `out` and `scratch`
+// are written).
+void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::vector<raster::Triangle>& out,
+                        Scratch& scratch) {
+  const std::vector<raster::Vertex>& verts = c_.verts_;
+  const std::vector<raster::WindowVertex>& window = c_.window_;
+  const size_t v[3] = {index(i0), index(i1), index(i2)};
+  if ((c_.outside_[v[0]] | c_.outside_[v[1]] | c_.outside_[v[2]]) == 0) {
+    const bool back = raster::back_facing_triangle(verts[v[0]].clip, verts[v[1]].clip, verts[v[2]].clip, rs_);
+    if (raster::culled(back, rs_)) return;
+    const bool use_back = back && rs_.two_side;
+    if (feedback_) {  // each vertex's own colour
+      raster::WindowVertex* in = scratch.inside;
+      // Mesa's two-side stage takes a triangle of zero area (determinant 0) as front-facing.
+      const raster::WindowVertex* wv[3] = {&window[v[0]], &window[v[1]], &window[v[2]]};
+      const bool reported_back = use_back && !zero_area(wv);
+      for (int k = 0; k < 3; ++k) {
+        in[k] = window[v[k]];
+        in[k].color = reported_back ? verts[v[k]].back : verts[v[k]].front;
+        in[k].sec = reported_back ? verts[v[k]].back_sec : verts[v[k]].front_sec;
+      }
+      return c_.feedback_primitive(GL_POLYGON_TOKEN, in, 3, false, rs_, offset_stage_);
+    }
+    std::array<raster::SetupVertex, 3> sv;
+    for (int k = 0; k < 3; ++k) {
+      const raster::Vertex& src = rs_.flat ? at(provoking) : verts[v[k]];  // flat: the provoking colour
+      sv[k] = {&window[v[k]], use_back ? &src.back : &src.front, use_back ? &src.back_sec : &src.front_sec};
+    }
+    raster::Triangle t;
+    if (raster::setup(sv, rs_, t)) out.push_back(t);
+    return;
+  }
+  for (int k = 0; k < 3; ++k) scratch.prim[k] = verts[v[k]];
+  raster::ClipTemps* temps = feedback_ ? &c_.clip_temps_ : nullptr;
+  const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs_, &at(provoking), false, nullptr, temps);
+  if (feedback_ && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
+  if (w.empty()) return;
+  if (feedback_) return c_.feedback_primitive(GL_POLYGON_TOKEN, w.begin(), w.size(), true, rs_, offset_stage_);
+  raster::Triangle t;
+  for (size_t k = 1; k + 1 < w.size(); ++k)
+    if (raster::setup(w[k], w[k + 1], w[0], rs_, t)) out.push_back(t);
+}
+
+// A line or a point, clipped (a point as a degenerate line) and drawn at once, or fed back.
+void Assembly::line_or_point(std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+  prim_.clear();
+  for (size_t k : idx) prim_.push_back(at(k));
+  const bool is_point = kind == GL_POINT_TOKEN;
+  if (is_point) prim_.push_back(prim_[0]);
+  // Feedback reports each vertex's own colour (Mesa does not flatten there), but for the ends
+  // that clipping makes (clip_and_map).
+  raster::ClipTemps* temps = feedback_ ? &c_.clip_temps_ : nullptr;
+  const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &at(provoking), true, nullptr, temps);
+  if (feedback_ && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
+  if (w.empty()) return;
+  if (feedback_) return c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
+  c_.flush_clear();
+  if (is_point) raster::draw_point(c_.fb_, w[0], rs_);
+  else raster::draw_line(c_.fb_, w[0], w[1], rs_);
+}
+
+void Assembly::emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+  const size_t* i = idx.begin();
+  if (kind == GL_POLYGON_TOKEN) return triangle(i[0], i[1], i[2], provoking, c_.triangles_, scratch_);
+  line_or_point(idx, provoking, kind);
+}
+
+// The mode's primitives from n vertices (or elements), each with its provoking vertex.
+void Assembly::assemble(size_t n) {
+  switch (c_.prim_mode_) {
+    case GL_POINTS:
+      for (size_t i = 0; i < n; ++i) emit({i}, i, GL_POINT_TOKEN);
+      break;
+    case GL_LINES:
+      for (size_t i = 0; i + 1 < n; i += 2) emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
+      break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+      for (size_t i = 0; i + 1 < n; ++i) emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
+      if (c_.prim_mode_ == GL_LINE_LOOP && n >= 2) emit({n - 1, 0}, 0, GL_LINE_TOKEN);
+      break;
+    case GL_TRIANGLES:
+      for (size_t i = 0; i + 2 < n; i += 3) emit({i, i + 1, i + 2}, i + 2, GL_POLYGON_TOKEN);
+      break;
+    case GL_TRIANGLE_STRIP:
+      for (size_t i = 0; i + 2 < n; ++i)
+        if (i % 2 == 0) emit({i, i + 1, i + 2}, i + 2, GL_POLYGON_TOKEN);
+        else emit({i + 1, i, i + 2}, i + 2, GL_POLYGON_TOKEN);
+      break;
+    case GL_TRIANGLE_FAN:
+      for (size_t i = 1; i + 1 < n; ++i) emit({0, i, i + 1}, i + 1, GL_POLYGON_TOKEN);
+      break;
+    // Mesa splits quads and polygons one way when drawing and another in feedback (measured with
+    // Mesa 22.3 in tests/raster/prims_test.cpp). Drawing smooth, the quad (q0, q1, q2, q3) is the
+    // fan (q0, q1, q2), (q0, q2, q3); feedback, and drawing flat quads, take the draw module's
+    // decomposition for the last vertex provoking: (q0, q1, q3), (q1, q2, q3); feedback gives a
+    // polygon's fan with its first vertex last. GL 2.1 leaves the split open (section 2.6.1).
+    // A draw with any vertex outside the view volume runs the draw module's pipeline (its clipper)
+    // for all of its primitives, and so takes that decomposition too, drawing smooth.
+    case GL_QUADS:  // the 4th vertex provokes
+      for (size_t i = 0; i + 3 < n; i += 4) {
+        if (feedback_ || rs_.flat || any_outside_) {
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+          emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        } else {
+          emit({i, i + 1, i + 2}, i + 3, GL_POLYGON_TOKEN);
+          emit({i, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        }
+      }
+      break;
+    case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2), as Mesa's feedback (2i+2, 2i, 2i+1, 2i+3); 2i+3 provokes
+      for (size_t i = 0; i + 3 < n; i += 2) {
+        if (feedback_ || any_outside_) {
+          emit({i + 2, i, i + 3}, i + 3, GL_POLYGON_TOKEN);
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        } else {
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+          emit({i, i + 3, i + 2}, i + 3, GL_POLYGON_TOKEN);
+        }
+      }
+      break;
+    case GL_POLYGON:  // a fan from the first vertex, which provokes
+      for (size_t i = 1; i + 1 < n; ++i)
+        if (feedback_) emit({i, i + 1, 0}, 0, GL_POLYGON_TOKEN);
+        else emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
+      break;
+  }
+}
+
+// GL_TRIANGLES, many of them, while rendering: assembly and setup split in contiguous ranges, one
+// per thread; the rasterizer takes the ranges in order, so the picture is the same as from one
+// thread.
+void Assembly::triangles_on_threads(size_t n) {
+  raster::Workers& w = c_.workers();
+  const size_t count = n / 3, parts = size_t(w.size());
+  c_.tri_parts_.resize(parts - 1);
+  w.run([&](int share) {
+    const size_t p = size_t(share);
+    Scratch local;
+    std::vector<raster::Triangle>& out = p == 0 ? c_.triangles_ : c_.tri_parts_[p - 1];
+    if (p > 0) out.clear();
+    for (size_t t = count * p / parts; t < count * (p + 1) / parts; ++t)
+      triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, out, p == 0 ? scratch_ : local);
+  });
+  const std::vector<raster::Triangle>* lists[raster::Workers::kMax] = {&c_.triangles_};
+  for (size_t p = 1; p < parts; ++p) lists[p] = &c_.tri_parts_[p - 1];
+  c_.flush_clear();
+  raster::draw_triangles(c_.fb_, lists, parts, rs_, w);
+}
+
+}  // namespace ffc::state
