@@ -36,23 +36,16 @@ void Context::ColorPointer(GLint size, GLenum type, GLsizei stride, const void* 
 }
 
 void Context::fetch_vertex(GLint i, Fixed f) {
+  // Through the current values, as glNormal, glColor and glVertex would be called.
   if (normal_array_.enabled) {
-    const uint8_t* p = element(normal_array_, i);
-    Normal(read_component(p, normal_array_.type, 0, f), read_component(p, normal_array_.type, 1, f),
-           read_component(p, normal_array_.type, 2, f));
+    const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
+    Normal(n.x, n.y, n.z);
   }
   if (color_array_.enabled) {
-    const uint8_t* p = element(color_array_, i);
-    const GLenum t = color_array_.type;
-    Color(read_component(p, t, 0, f), read_component(p, t, 1, f), read_component(p, t, 2, f),
-          color_array_.size == 4 ? read_component(p, t, 3, f) : 1.0, color_array_.size);
+    const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
+    Color(c.r, c.g, c.b, c.a, color_array_.size);
   }
-  if (vertex_array_.enabled) {
-    const uint8_t* p = element(vertex_array_, i);
-    glm::dvec4 v(0, 0, 0, 1);
-    for (int k = 0; k < vertex_array_.size; ++k) v[k] = read_component(p, vertex_array_.type, k, Fixed::Raw);
-    process_vertex(v);
-  }
+  if (vertex_array_.enabled) process_vertex(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
 }
 
 // An enabled array that was never given a pointer: GL 2.1 leaves reading it undefined and Mesa

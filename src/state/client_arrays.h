@@ -58,6 +58,35 @@ inline const uint8_t* element(const ClientArray& a, GLint i) {
   return static_cast<const uint8_t*>(a.pointer) + stride * size_t(i);
 }
 
+// Components [0, n) of an element of T, the others from `v`, a fixed-size copy each: straight to
+// registers (a copy of a run-time size is a library call, and one copy of several components
+// to the stack, read back one by one, stalls on store forwarding).
+template <typename T>
+glm::dvec4 direct(const uint8_t* p, int n, glm::dvec4 v) {
+  auto at = [p](int k) {
+    T t;
+    std::memcpy(&t, p + size_t(k) * sizeof(T), sizeof(T));
+    return double(t);
+  };
+  switch (n) {
+    case 4: v.w = at(3); [[fallthrough]];
+    case 3: v.z = at(2); [[fallthrough]];
+    case 2: v.y = at(1); [[fallthrough]];
+    default: v.x = at(0);
+  }
+  return v;
+}
+
+// Components [0, n) of element i in double, the others from `v`: the one reader of the client
+// arrays. Float and double arrays (immediate mode's kept vertices among them) read directly.
+inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, Fixed normalized, glm::dvec4 v) {
+  const uint8_t* p = element(a, i);
+  if (a.type == GL_FLOAT) return direct<float>(p, n, v);
+  if (a.type == GL_DOUBLE) return direct<double>(p, n, v);
+  for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
+  return v;
+}
+
 // The smallest and largest of n indices (n > 0): a draw of a million indices reads them all
 // before anything else (draw.cpp).
 void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi);

@@ -24,6 +24,7 @@
 
 namespace ffc::state {
 
+struct VertexIn;  // vertex_stage.h
 enum class Precision { Float, Double };
 
 inline constexpr const char* kClipTempsUnwritten =
@@ -211,20 +212,29 @@ class Context {
   // Integer normals and colours: as Mesa's draws and its glArrayElement convert them, or GL 2.1's rule.
   Fixed draw_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::Gl42; }
   Fixed element_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::MesaCall; }
+  // The vertex stage (vertex_stage.cpp): one vertex now, or kept for the triangle list.
   void process_vertex(const glm::dvec4& obj);
   glm::dvec4 mesa_raster_color(const float obj[4]);  // raster_pos.cpp
   void raster_pos_spec(double x, double y, double z, double w);
   void undefer();  // immediate-mode vertices kept for glEnd: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
-                        bool* zero_normal) const;
-  void fetch_range(GLint first, GLint count);
+                        bool* zero_normal) const;  // one vertex through the stage
+  VertexIn array_vertex(GLint i) const;
+  template <class Batches>
+  void run_stage(GLint first, GLint count, const Batches& batches);
+  void arrays_to_vertices(GLint first, GLint count);  // the general path's large draws, into verts_
+  template <typename T>
+  friend class VertexStage;
   bool fits_in_memory(uint64_t vertices);  // false: GL_OUT_OF_MEMORY recorded
   bool arrays_readable();                  // false: GL_INVALID_OPERATION recorded
   // The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES, rendering, float):
   // array elements [first, first + count) lit into shaded_, then drawn from shared vertices.
   bool shaded_path(GLenum mode) const;
-  void shade_range(GLint first, GLint count);
+  template <class Fetch>
+  void stage_to_list(const Fetch& fetch, GLint first, GLint count);
+  void arrays_to_list(GLint first, GLint count);  // array elements [first, first + count)
+  void kept_to_list();                            // immediate mode's kept vertices
   void draw_shaded(const uint32_t* indices, size_t triangles);
   raster::State raster_state() const;
   raster::Workers& workers();

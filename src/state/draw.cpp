@@ -55,12 +55,12 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   prim_mode_ = mode;
   verts_.clear();
   if (shaded_path(mode)) {
-    shade_range(first, count);
+    arrays_to_list(first, count);
     return draw_shaded(nullptr, size_t(count) / 3);
   }
   const CurrentValues kept = current_values();
   if (count >= kParallelVertices && threads_ > 1)
-    fetch_range(first, count);
+    arrays_to_vertices(first, count);
   else
     for (GLint i = first; i < first + count; ++i) fetch_vertex(i, draw_fixed());
   restore(kept);
@@ -91,7 +91,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
     index_range(u, size_t(count), lo, hi);
     if (lo == 0 && !fits_in_memory(uint64_t(hi) + 1)) return;
     if (lo == 0) {
-      shade_range(0, GLint(hi) + 1);
+      arrays_to_list(0, GLint(hi) + 1);
       return draw_shaded(u, size_t(count) / 3);
     }
   }
@@ -100,7 +100,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   if (count > 0) index_range(elements_.data(), elements_.size(), lo, hi);
   if (count > 0 && !fits_in_memory(uint64_t(hi - lo) + 1)) return elements_.clear();
   if (count > 0 && shaded_path(mode)) {
-    shade_range(GLint(lo), GLint(hi - lo + 1));
+    arrays_to_list(GLint(lo), GLint(hi - lo + 1));
     for (uint32_t& e : elements_) e -= lo;
     draw_shaded(elements_.data(), size_t(count) / 3);
     elements_.clear();
@@ -109,7 +109,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   if (count > 0) {
     const CurrentValues kept = current_values();
     if (hi - lo + 1 >= kParallelVertices && threads_ > 1)
-      fetch_range(GLint(lo), GLint(hi - lo + 1));
+      arrays_to_vertices(GLint(lo), GLint(hi - lo + 1));
     else
       for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i), draw_fixed());
     restore(kept);

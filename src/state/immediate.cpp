@@ -73,14 +73,7 @@ void Context::End() {
     return flush_stored();
   }
   deferred_ = false;
-  // The kept vertices as client arrays for the triangle-list path (no GL call can change the
-  // arrays between glBegin and glEnd, so borrowing them is safe).
-  const ClientArray arrays[3] = {vertex_array_, normal_array_, color_array_};
-  vertex_array_ = {true, 4, GL_FLOAT, sizeof(glm::vec4), deferred_pos_.data()};
-  normal_array_ = {!deferred_normal_.empty(), 3, GL_DOUBLE, sizeof(glm::dvec3), deferred_normal_.data()};
-  color_array_ = {!deferred_color_.empty(), 4, GL_DOUBLE, sizeof(glm::dvec4), deferred_color_.data()};
-  shade_range(0, GLint(deferred_pos_.size()));
-  vertex_array_ = arrays[0], normal_array_ = arrays[1], color_array_ = arrays[2];
+  kept_to_list();
   draw_shaded(nullptr, deferred_pos_.size() / 3);
   flush_stored();
 }

@@ -1,13 +1,30 @@
-// The vertex stage: each vertex fetched, transformed, lit and its colours clamped, before
-// primitive assembly (GL 2.1 sections 2.11 to 2.14).
+// The vertex stage, written once (GL 2.1 sections 2.11 to 2.14; what Mesa's ffvertex_prog.c
+// builds): fetch, transform to eye and clip space, the normal to eye space (normalized or
+// rescaled), lighting through the kernel chosen by the lighting key, or the colour clamped.
+// Every path runs it, in batches of up to kBatch vertices:
+//   - one vertex at a time (glVertex, glArrayElement, small draws, glRasterPos in spec mode):
+//     vertex() and process_vertex(), into raster::Vertex;
+//   - a large draw on the general path: arrays_to_vertices(), into verts_, on the threads;
+//   - the triangle-list path: arrays_to_list() and kept_to_list() (immediate mode's kept
+//     vertices), into raster::ShadedVertices, on the threads.
+// The clip codes are taken where the vertices are consumed: primitive.cpp's Assembly and
+// raster::map_shaded.
+#include "state/vertex_stage.h"
+
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "state/client_arrays.h"
 #include "state/context.h"
 #include "state/float_matrix.h"
 
 namespace ffc::state {
+
+namespace {
+constexpr int kBatch = 64;                // vertices per call of the lighting kernel
+constexpr GLint kParallelStage = 2048;   // below this one thread runs the stage for a whole draw
+}  // namespace
 
 void Context::update_vertex_constants() {
   if (!lighting_) return;
@@ -36,56 +53,133 @@ void Context::update_vertex_constants() {
   }
 }
 
-raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
-                               bool* zero_normal) const {
-  raster::Vertex v;
-  glm::dvec4 eye;
-  if (precision_ == Precision::Float) {  // positions rounded as Mesa rounds them
-    const glm::vec4 of(obj);
-    v.clip = fmat::transform(mvp_f_, of);
-    eye = fmat::transform(modelview_f_.back().values(), of);
-  } else {
-    eye = modelview_.back() * obj;
-    v.clip = projection_.back() * eye;
+// What the stage makes of up to N vertices, in the context's precision T (float: positions
+// rounded as Mesa rounds them, float_matrix.h).
+template <typename T, int N>
+struct StageOut {
+  glm::vec<4, T> clip[N];
+  double fog[N];                // |eye z|, where fog reads it
+  lighting::Lit<T> lit[N];      // lighting on: both faces' colours
+  glm::dvec4 unlit[N];          // lighting off: the colour clamped
+};
+
+// The stage for one draw: the constants it reads, taken from the context once (after
+// update_vertex_constants), and the run of a batch.
+template <typename T>
+class VertexStage {
+  using V4 = glm::vec<4, T>;
+  using V3 = glm::vec<3, T>;
+
+ public:
+  using Scalar = T;
+  explicit VertexStage(const Context& c)
+      : c_(c),
+        inv_(c.normal_matrix_),
+        rescale_(c.rescale_normal_ ? glm::length(glm::dvec3(inv_[0][2], inv_[1][2], inv_[2][2])) : 0.0),  // M^-1's third row
+        fog_depth_(c.fog_ && c.fog_coord_src_ == GL_FRAGMENT_DEPTH) {}
+
+  bool fog_depth() const { return fog_depth_; }
+
+  // Vertices fetch(first + j), j in [0, m), m <= N, into out[0, m); `zero_normal` set when a
+  // normal of length 0 is normalized.
+  template <int N, class Fetch>
+  void run(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal) const {
+    V4 eye[N], color[N];
+    V3 normal[N];
+    for (int j = 0; j < m; ++j) {
+      const VertexIn in = fetch(first + j);
+      V4 e(0);  // eye space, where the lighting or fog reads it
+      transform(in.obj, out.clip[j], e);
+      // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
+      // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
+      // current fog coordinate, which stays 0 here (no glFogCoord).
+      if (fog_depth_) out.fog[j] = std::abs(double(e.z));
+      if (!c_.lighting_) {
+        // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = !(in.color[k] < 1) ? 1.0 : in.color[k] > 0 ? in.color[k] : 0.0;
+        continue;
+      }
+      // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
+      // takes x, y, z as they are (docs/deviations.md). The lighting divides unless w is 1.
+      if (!c_.spec_) e.w = 1;
+      eye[j] = e;
+      color[j] = V4(in.color);
+      normal[j] = V3(eye_normal(in.normal, zero_normal));
+    }
+    if (!c_.lighting_) return;
+    if constexpr (std::is_same_v<T, float>) c_.kernel_f_(c_.prepared_f_, eye, normal, color, size_t(m), out.lit);
+    else c_.kernel_d_(c_.prepared_d_, eye, normal, color, size_t(m), out.lit);
   }
-  // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
-  // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
-  // current fog coordinate, which stays 0 here (no glFogCoord).
-  if (fog_ && fog_coord_src_ == GL_FRAGMENT_DEPTH) v.fog = std::abs(eye.z);
-  // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
-  // takes x, y, z as they are (docs/deviations.md). The lighting divides unless w is 1.
-  if (!spec_) eye.w = 1;
-  if (!lighting_) {
-    // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
-    for (int k = 0; k < 4; ++k) v.front[k] = !(color[k] < 1) ? 1.0 : color[k] > 0 ? color[k] : 0.0;
-    v.back = v.front;
+
+ private:
+  // Eye and clip position: in float as Mesa computes them, or in double.
+  void transform(const glm::dvec4& obj, V4& clip, V4& eye) const {
+    if constexpr (std::is_same_v<T, float>) {
+      const glm::vec4 of(obj);
+      clip = fmat::transform(c_.mvp_f_, of);
+      if (c_.lighting_ || fog_depth_) eye = fmat::transform(c_.modelview_f_.back().values(), of);
+    } else {
+      eye = c_.modelview_.back() * obj;
+      clip = c_.projection_.back() * eye;
+    }
+  }
+
+  // An object-space normal to eye space: a row vector times M^-1 (the inverse transpose), then
+  // normalized (a zero normal stays zero, ambient and emission only, and is reported) or rescaled,
+  // in double as glm computes them.
+  glm::dvec3 eye_normal(const glm::dvec3& raw, bool* zero_normal) const {
+    glm::dvec3 n = raw * inv_;
+    if (c_.normalize_) {
+      const double len = glm::length(n);
+      if (len > 0) n /= len;
+      else *zero_normal = true;
+    } else if (rescale_ > 0) {
+      n /= rescale_;
+    }
+    return n;
+  }
+
+  const Context& c_;
+  const glm::dmat3 inv_;
+  const double rescale_;  // 0: no rescale
+  const bool fog_depth_;
+};
+
+namespace {
+
+// A stage result as the general path keeps it.
+template <typename T, int N>
+raster::Vertex general_vertex(const StageOut<T, N>& out, int j, bool lit, bool fog) {
+  raster::Vertex v;
+  v.clip = out.clip[j];
+  if (fog) v.fog = out.fog[j];
+  if (!lit) {
+    v.front = v.back = out.unlit[j];
     v.front_sec = v.back_sec = glm::dvec4(0);
     return v;
   }
-  const glm::dmat3& inv = normal_matrix_;
-  glm::dvec3 n = normal * inv;  // row vector times M^-1
-  if (normalize_) {
-    const double len = glm::length(n);
-    if (len > 0) n /= len;  // a zero normal stays zero: ambient and emission only
-    else *zero_normal = true;
-  } else if (rescale_normal_) {
-    const double f = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
-    if (f > 0) n /= f;
-  }
-  if (precision_ == Precision::Float) {
-    const glm::vec4 pf(eye), cf(color);
-    const glm::vec3 nf(n);
-    lighting::Lit<float> lit;
-    kernel_f_(prepared_f_, &pf, &nf, &cf, 1, &lit);
-    v.front = lit.primary[0], v.back = lit.primary[1];
-    v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
-  } else {
-    lighting::Lit<double> lit;
-    kernel_d_(prepared_d_, &eye, &n, &color, 1, &lit);
-    v.front = lit.primary[0], v.back = lit.primary[1];
-    v.front_sec = lit.secondary[0], v.back_sec = lit.secondary[1];
-  }
+  const lighting::Lit<T>& l = out.lit[j];
+  v.front = l.primary[0], v.back = l.primary[1];
+  v.front_sec = l.secondary[0], v.back_sec = l.secondary[1];
   return v;
+}
+
+}  // namespace
+
+// One vertex through the stage, in the context's precision.
+raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
+                               bool* zero_normal) const {
+  const auto fetch = [&](GLint) { return VertexIn{obj, normal, color}; };
+  if (precision_ == Precision::Float) {
+    const VertexStage<float> stage(*this);
+    StageOut<float, 1> out;
+    stage.run(fetch, 0, 1, out, zero_normal);
+    return general_vertex(out, 0, lighting_, stage.fog_depth());
+  }
+  const VertexStage<double> stage(*this);
+  StageOut<double, 1> out;
+  stage.run(fetch, 0, 1, out, zero_normal);
+  return general_vertex(out, 0, lighting_, stage.fog_depth());
 }
 
 void Context::process_vertex(const glm::dvec4& obj) {
@@ -104,146 +198,103 @@ void Context::process_vertex(const glm::dvec4& obj) {
   if (!finite) deviations_.insert(kNonfiniteVertex);
 }
 
-// A large glDrawArrays / glDrawElements range: the vertices are independent, so both cores take
-// half each.
-void Context::fetch_range(GLint first, GLint count) {
+// Array element i as the stage takes it: each attribute from its array when enabled, else the
+// current value (the normal only where the lighting reads it).
+VertexIn Context::array_vertex(GLint i) const {
+  VertexIn v;
+  v.obj = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
+  v.color = color_array_.enabled ? attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1)) : color_;
+  v.normal = lighting_ && normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0)))
+                                                : normal_;
+  return v;
+}
+
+// Vertices [first, first + count) in batches, batch(lo, hi, zero_normal) for each share of the
+// range: on one thread below kParallelStage vertices, else in more shares than threads (a late
+// thread's share is taken by another). The vertices are independent, so the split changes nothing.
+template <class Batches>
+void Context::run_stage(GLint first, GLint count, const Batches& batches) {
+  bool zero[8] = {};  // per share: a zero normal met
+  if (count < kParallelStage || threads_ == 1) {
+    batches(first, first + count, &zero[0]);
+  } else {
+    raster::Workers& w = workers();
+    const int shares = std::min(4 * w.size(), 8);
+    w.run([&](int s) {
+      batches(first + GLint(int64_t(count) * s / shares), first + GLint(int64_t(count) * (s + 1) / shares), &zero[s]);
+    }, shares);
+  }
+  if (std::find(std::begin(zero), std::end(zero), true) != std::end(zero)) deviations_.insert(kZeroNormal);
+}
+
+// A large glDrawArrays / glDrawElements range on the general path: array elements [first,
+// first + count) into verts_.
+void Context::arrays_to_vertices(GLint first, GLint count) {
   update_vertex_constants();
   verts_.resize(size_t(count));
-  auto attribute = [](const ClientArray& a, GLint i, int n, Fixed normalized, glm::dvec4 v) {
-    const uint8_t* p = element(a, i);
-    for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
-    return v;
-  };
-  auto work = [&](GLint lo, GLint hi, bool* zero) {
-    for (GLint i = lo; i < hi; ++i) {
-      const glm::dvec3 n = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0)))
-                                                 : normal_;
-      const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1))
-                                                : color_;
-      verts_[size_t(i - first)] = vertex(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)), n, c, zero);
+  const auto fetch = [this](GLint i) { return array_vertex(i); };
+  auto batches = [&](auto stage, GLint lo, GLint hi, bool* zero) {
+    using T = typename decltype(stage)::Scalar;
+    StageOut<T, kBatch> out;
+    for (GLint b = lo; b < hi; b += kBatch) {
+      const int m = int(std::min<GLint>(kBatch, hi - b));
+      stage.run(fetch, b, m, out, zero);
+      for (int j = 0; j < m; ++j) verts_[size_t(b + j - first)] = general_vertex(out, j, lighting_, stage.fog_depth());
     }
   };
-  raster::Workers& w = workers();
-  bool zero[raster::Workers::kMax] = {};  // per share: a zero normal met
-  w.run([&](int share) {
-    bool z = false;
-    work(first + GLint(int64_t(count) * share / w.size()), first + GLint(int64_t(count) * (share + 1) / w.size()), &z);
-    zero[share] = z;
-  });
-  if (std::find(zero, zero + w.size(), true) != zero + w.size()) deviations_.insert(kZeroNormal);
-}
-namespace {
-
-constexpr int kBatch = 64;                 // vertices per call of the lighting kernel
-constexpr GLint kParallelShading = 2048;  // below this one thread lights them all
-
-// Components [0, n) of an element of T, the others from `v`, a fixed-size copy each: straight to
-// registers (a copy of a run-time size is a library call, and one copy of several components
-// to the stack, read back one by one, stalls on store forwarding).
-template <typename T>
-glm::dvec4 direct(const uint8_t* p, int n, glm::dvec4 v) {
-  auto at = [p](int k) {
-    T t;
-    std::memcpy(&t, p + size_t(k) * sizeof(T), sizeof(T));
-    return double(t);
-  };
-  switch (n) {
-    case 4: v.w = at(3); [[fallthrough]];
-    case 3: v.z = at(2); [[fallthrough]];
-    case 2: v.y = at(1); [[fallthrough]];
-    default: v.x = at(0);
-  }
-  return v;
+  if (precision_ == Precision::Float)
+    run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<float>(*this), lo, hi, zero); });
+  else
+    run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<double>(*this), lo, hi, zero); });
 }
 
-// Components [0, n) of element i, the others from `v`; float and double arrays (immediate mode's
-// kept vertices among them) read directly.
-inline glm::dvec4 attribute(const ClientArray& a, GLint i, int n, Fixed normalized, glm::dvec4 v) {
-  const uint8_t* p = element(a, i);
-  if (a.type == GL_FLOAT) return direct<float>(p, n, v);
-  if (a.type == GL_DOUBLE) return direct<double>(p, n, v);
-  for (int k = 0; k < n; ++k) v[k] = read_component(p, a.type, k, normalized);
-  return v;
-}
-
-// Object-space normals to eye space: a row vector times M^-1 (the inverse transpose), then
-// normalized (a zero normal stays zero, ambient and emission only, and is reported) or rescaled
-// (rescale > 0), in double as glm computes them, then to float.
-void eye_normals(const glm::dvec3* raw, int m, const glm::dmat3& inv, bool normalize, double rescale,
-                        glm::vec3* out, bool* zero_normal) {
-  for (int j = 0; j < m; ++j) {
-    glm::dvec3 n = raw[j] * inv;
-    if (normalize) {
-      const double len = glm::length(n);
-      if (len > 0) n /= len;
-      else *zero_normal = true;
-    } else if (rescale > 0) {
-      n /= rescale;
-    }
-    out[j] = glm::vec3(n);
-  }
-}
-
-}  // namespace
-
-void Context::shade_range(GLint first, GLint count) {
+// The triangle-list path's vertices (float): count vertices, vertex o from fetch(first + o), lit
+// into shaded_ and mapped to the window.
+template <class Fetch>
+void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
   update_vertex_constants();
   const raster::State rs = raster_state();
   raster::ShadedVertices& out = shaded_;
   out.resize(size_t(count), rs.two_side, rs.add_secondary);
-  const glm::mat4 modelview = modelview_f_.back().values();
-  const glm::dmat3 inv = normal_matrix_;
-  const double rescale = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));  // M^-1's third row
-
-  auto work = [&](GLint lo, GLint hi, bool* zero_normal) {
-    glm::vec4 eye[kBatch], color[kBatch];
-    glm::vec3 normal[kBatch];
-    glm::dvec3 raw[kBatch];
-    lighting::Lit<float> lit[kBatch];
+  run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) {
+    const VertexStage<float> stage(*this);
+    StageOut<float, kBatch> s;
     for (GLint b = lo; b < hi; b += kBatch) {
       const int m = int(std::min<GLint>(kBatch, hi - b));
+      stage.run(fetch, b, m, s, zero);
+      const size_t at = size_t(b - first);
       for (int j = 0; j < m; ++j) {
-        const GLint i = b + j;
-        // Positions rounded as Mesa rounds them (float_matrix.h).
-        const glm::vec4 obj(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
-        const size_t o = size_t(i - first);
-        out.clip[o] = fmat::transform(mvp_f_, obj);
-        const glm::dvec4 c = color_array_.enabled ? attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1))
-                                                  : color_;
+        const size_t o = at + size_t(j);
+        out.clip[o] = s.clip[j];
         if (!lighting_) {
-          // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa.
-          glm::vec4& f = out.hot[o].color;
-          for (int k = 0; k < 4; ++k) f[k] = float(!(c[k] < 1) ? 1.0 : c[k] > 0 ? c[k] : 0.0);
+          out.hot[o].color = glm::vec4(s.unlit[j]);
           continue;
         }
-        eye[j] = fmat::transform(modelview, obj);
-        if (!spec_) eye[j].w = 1;  // Mesa lights at x, y, z (Context::vertex)
-        color[j] = glm::vec4(c);
-        raw[j] = normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0))) : normal_;
+        const lighting::Lit<float>& l = s.lit[j];
+        out.hot[o].color = l.primary[0];
+        if (!out.back.empty()) out.back[o] = l.primary[1];
+        if (!out.front_sec.empty()) out.front_sec[o] = l.secondary[0];
+        if (!out.back_sec.empty()) out.back_sec[o] = l.secondary[1];
       }
-      if (lighting_) eye_normals(raw, m, inv, normalize_, rescale_normal_ ? rescale : 0.0, normal, zero_normal);
-      raster::map_shaded(out, size_t(b - first), size_t(m), rs);
-      if (!lighting_) continue;
-      kernel_f_(prepared_f_, eye, normal, color, size_t(m), lit);
-      for (int j = 0; j < m; ++j) {
-        const size_t o = size_t(b + j - first);
-        out.hot[o].color = lit[j].primary[0];
-        if (!out.back.empty()) out.back[o] = lit[j].primary[1];
-        if (!out.front_sec.empty()) out.front_sec[o] = lit[j].secondary[0];
-        if (!out.back_sec.empty()) out.back_sec[o] = lit[j].secondary[1];
-      }
+      raster::map_shaded(out, at, size_t(m), rs);
     }
-  };
-  bool zero[8] = {};
-  if (count < kParallelShading || threads_ == 1) {
-    work(first, first + count, &zero[0]);
-  } else {
-    raster::Workers& w = workers();
-    const int shares = std::min(4 * w.size(), 8);  // more than threads: a late thread's share is taken
-    w.run([&](int s) { work(first + GLint(int64_t(count) * s / shares), first + GLint(int64_t(count) * (s + 1) / shares), &zero[s]); },
-          shares);
-  }
-  if (std::find(std::begin(zero), std::end(zero), true) != std::end(zero)) deviations_.insert(kZeroNormal);
+  });
+}
+
+void Context::arrays_to_list(GLint first, GLint count) {
+  stage_to_list([this](GLint i) { return array_vertex(i); }, first, count);
+}
+
+// Immediate mode's kept vertices (process_vertex), as they were at each glVertex: what was not
+// kept is not read, and the current value stands in.
+void Context::kept_to_list() {
+  stage_to_list(
+      [this](GLint i) {
+        const size_t k = size_t(i);
+        return VertexIn{glm::dvec4(deferred_pos_[k]), deferred_normal_.empty() ? normal_ : deferred_normal_[k],
+                        deferred_color_.empty() ? color_ : deferred_color_[k]};
+      },
+      0, GLint(deferred_pos_.size()));
 }
 
 }  // namespace ffc::state
