@@ -17,7 +17,7 @@ namespace ffc::report {
 
 // The lighting state GL holds once the description's calls are made, as the double lighting
 // stage takes it: light positions and spot directions in eye space, the key as our context builds
-// it (state/context.cpp).
+// it (state/light.cpp).
 struct LightingState {
   lighting::LightParams lights[8];
   lighting::MaterialParams materials[2];

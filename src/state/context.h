@@ -216,7 +216,7 @@ class Context {
   void process_vertex(const glm::dvec4& obj);
   glm::dvec4 mesa_raster_color(const float obj[4]);  // raster_pos.cpp
   void raster_pos_spec(double x, double y, double z, double w);
-  void undefer();  // immediate-mode vertices kept for glEnd: lit now, one by one
+  void leave_triangle_list();  // the vertices kept for glEnd's triangle list: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
                         bool* zero_normal) const;  // one vertex through the stage
@@ -229,13 +229,13 @@ class Context {
   bool fits_in_memory(uint64_t vertices);  // false: GL_OUT_OF_MEMORY recorded
   bool arrays_readable();                  // false: GL_INVALID_OPERATION recorded
   // The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES, rendering, float):
-  // array elements [first, first + count) lit into shaded_, then drawn from shared vertices.
-  bool shaded_path(GLenum mode) const;
+  // array elements [first, first + count) lit into list_vertices_, then drawn from shared vertices.
+  bool triangle_list_path(GLenum mode) const;
   template <class Fetch>
   void stage_to_list(const Fetch& fetch, GLint first, GLint count);
   void arrays_to_list(GLint first, GLint count);  // array elements [first, first + count)
-  void kept_to_list();                            // immediate mode's kept vertices
-  void draw_shaded(const uint32_t* indices, size_t triangles);
+  void immediate_to_list();                       // immediate mode's vertices kept for the list
+  void draw_triangle_list(const uint32_t* indices, size_t triangles);
   raster::State raster_state() const;
   raster::Workers& workers();
   void prepare_lighting();
@@ -352,12 +352,15 @@ class Context {
   std::vector<raster::WindowVertex> window_;  // per vertex inside: its window position
   int threads_ = 2;
   std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
-  raster::ShadedVertices shaded_;  // the triangle-list path's vertices
+  // The triangle-list path: GL_TRIANGLES while rendering in float, lit in batches into compact
+  // records the rasterizer reads in place (raster/triangle_list.h); raster calls the records
+  // ShadedVertices. The path has this one name in state/.
+  raster::ShadedVertices list_vertices_;
   bool triangle_lists_ = true;
-  bool deferred_ = false;          // glBegin(GL_TRIANGLES): vertices kept as sent, lit at glEnd
-  std::vector<glm::vec4> deferred_pos_;
-  std::vector<glm::dvec3> deferred_normal_;
-  std::vector<glm::dvec4> deferred_color_;
+  bool immediate_list_ = false;  // glBegin(GL_TRIANGLES) on the list: vertices kept as sent, lit at glEnd
+  std::vector<glm::vec4> list_pos_;
+  std::vector<glm::dvec3> list_normal_;
+  std::vector<glm::dvec4> list_color_;
   raster::TriangleBins bins_;
 
   // The current raster position (glRasterPos): window position and clip w, its colour.

@@ -54,9 +54,9 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   begin_draw();
   prim_mode_ = mode;
   verts_.clear();
-  if (shaded_path(mode)) {
+  if (triangle_list_path(mode)) {
     arrays_to_list(first, count);
-    return draw_shaded(nullptr, size_t(count) / 3);
+    return draw_triangle_list(nullptr, size_t(count) / 3);
   }
   const CurrentValues kept = current_values();
   if (count >= kParallelVertices && threads_ > 1)
@@ -85,24 +85,24 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   // indices name it (a post-transform cache covering the whole draw).
   const uint8_t* p = static_cast<const uint8_t*>(indices);
   uint32_t lo = UINT32_MAX, hi = 0;
-  if (type == GL_UNSIGNED_INT && count > 0 && shaded_path(mode)) {
+  if (type == GL_UNSIGNED_INT && count > 0 && triangle_list_path(mode)) {
     // The triangle-list path reads 32-bit indices in place when they start at 0.
     const auto* u = static_cast<const uint32_t*>(indices);
     index_range(u, size_t(count), lo, hi);
     if (lo == 0 && !fits_in_memory(uint64_t(hi) + 1)) return;
     if (lo == 0) {
       arrays_to_list(0, GLint(hi) + 1);
-      return draw_shaded(u, size_t(count) / 3);
+      return draw_triangle_list(u, size_t(count) / 3);
     }
   }
   elements_.resize(size_t(count));
   for (GLsizei i = 0; i < count; ++i) elements_[i] = uint32_t(read_component(p, type, i, Fixed::Raw));
   if (count > 0) index_range(elements_.data(), elements_.size(), lo, hi);
   if (count > 0 && !fits_in_memory(uint64_t(hi - lo) + 1)) return elements_.clear();
-  if (count > 0 && shaded_path(mode)) {
+  if (count > 0 && triangle_list_path(mode)) {
     arrays_to_list(GLint(lo), GLint(hi - lo + 1));
     for (uint32_t& e : elements_) e -= lo;
-    draw_shaded(elements_.data(), size_t(count) / 3);
+    draw_triangle_list(elements_.data(), size_t(count) / 3);
     elements_.clear();
     return;
   }
@@ -153,15 +153,15 @@ void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
   for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
 }
 
-bool Context::shaded_path(GLenum mode) const {
+bool Context::triangle_list_path(GLenum mode) const {
   // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the
   // triangle list's kernels have neither a fog coordinate nor a depth offset.
   return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float &&
          !fog_ && !offset_fill_;
 }
 
-void Context::draw_shaded(const uint32_t* indices, size_t triangles) {
-  raster::draw_triangle_list(fb_, raster_state(), shaded_, indices, triangles, workers(), bins_, pending_clear_);
+void Context::draw_triangle_list(const uint32_t* indices, size_t triangles) {
+  raster::draw_triangle_list(fb_, raster_state(), list_vertices_, indices, triangles, workers(), bins_, pending_clear_);
   pending_clear_ = {};
 }
 

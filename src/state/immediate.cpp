@@ -46,21 +46,22 @@ void Context::Begin(GLenum mode) {
   prim_mode_ = mode;
   verts_.clear();
   // Triangles in immediate mode take the triangle-list path: the vertices are kept as sent and
-  // lit together at glEnd, unless a glMaterial between them changes the lighting (undefer()).
-  deferred_ = shaded_path(mode);
-  deferred_pos_.clear(), deferred_normal_.clear(), deferred_color_.clear();
+  // lit together at glEnd, unless a glMaterial between them changes the lighting
+  // (leave_triangle_list()).
+  immediate_list_ = triangle_list_path(mode);
+  list_pos_.clear(), list_normal_.clear(), list_color_.clear();
 }
 
-void Context::undefer() {
-  if (!deferred_) return;
-  deferred_ = false;
-  for (size_t i = 0; i < deferred_pos_.size(); ++i) {
+void Context::leave_triangle_list() {
+  if (!immediate_list_) return;
+  immediate_list_ = false;
+  for (size_t i = 0; i < list_pos_.size(); ++i) {
     const glm::dvec3 normal = normal_;
     const glm::dvec4 color = color_;
     // As they were at that glVertex (what was not kept is not read).
-    if (!deferred_normal_.empty()) normal_ = deferred_normal_[i];
-    if (!deferred_color_.empty()) color_ = deferred_color_[i];
-    process_vertex(glm::dvec4(deferred_pos_[i]));
+    if (!list_normal_.empty()) normal_ = list_normal_[i];
+    if (!list_color_.empty()) color_ = list_color_[i];
+    process_vertex(glm::dvec4(list_pos_[i]));
     normal_ = normal, color_ = color;
   }
 }
@@ -68,13 +69,13 @@ void Context::undefer() {
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = false;
-  if (!deferred_) {
+  if (!immediate_list_) {
     flush_primitive();
     return flush_stored();
   }
-  deferred_ = false;
-  kept_to_list();
-  draw_shaded(nullptr, deferred_pos_.size() / 3);
+  immediate_list_ = false;
+  immediate_to_list();
+  draw_triangle_list(nullptr, list_pos_.size() / 3);
   flush_stored();
 }
 }  // namespace ffc::state

@@ -5,8 +5,8 @@
 //   - one vertex at a time (glVertex, glArrayElement, small draws, glRasterPos in spec mode):
 //     vertex() and process_vertex(), into raster::Vertex;
 //   - a large draw on the general path: arrays_to_vertices(), into verts_, on the threads;
-//   - the triangle-list path: arrays_to_list() and kept_to_list() (immediate mode's kept
-//     vertices), into raster::ShadedVertices, on the threads.
+//   - the triangle-list path: arrays_to_list() and immediate_to_list() (immediate mode's
+//     vertices kept for the list), into raster::ShadedVertices, on the threads.
 // The clip codes are taken where the vertices are consumed: primitive.cpp's Assembly and
 // raster::map_shaded.
 #include "state/vertex_stage.h"
@@ -183,10 +183,10 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
 }
 
 void Context::process_vertex(const glm::dvec4& obj) {
-  if (deferred_) {  // lit with the others at glEnd; only what the lighting reads is kept
-    deferred_pos_.push_back(glm::vec4(obj));  // the float path rounds positions so anyway
-    if (lighting_) deferred_normal_.push_back(normal_);
-    if (!lighting_ || color_material_) deferred_color_.push_back(color_);
+  if (immediate_list_) {  // lit with the others at glEnd; only what the lighting reads is kept
+    list_pos_.push_back(glm::vec4(obj));  // the float path rounds positions so anyway
+    if (lighting_) list_normal_.push_back(normal_);
+    if (!lighting_ || color_material_) list_color_.push_back(color_);
     return;
   }
   update_vertex_constants();
@@ -249,12 +249,12 @@ void Context::arrays_to_vertices(GLint first, GLint count) {
 }
 
 // The triangle-list path's vertices (float): count vertices, vertex o from fetch(first + o), lit
-// into shaded_ and mapped to the window.
+// into list_vertices_ and mapped to the window.
 template <class Fetch>
 void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
   update_vertex_constants();
   const raster::State rs = raster_state();
-  raster::ShadedVertices& out = shaded_;
+  raster::ShadedVertices& out = list_vertices_;
   out.resize(size_t(count), rs.two_side, rs.add_secondary);
   run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) {
     const VertexStage<float> stage(*this);
@@ -287,14 +287,14 @@ void Context::arrays_to_list(GLint first, GLint count) {
 
 // Immediate mode's kept vertices (process_vertex), as they were at each glVertex: what was not
 // kept is not read, and the current value stands in.
-void Context::kept_to_list() {
+void Context::immediate_to_list() {
   stage_to_list(
       [this](GLint i) {
         const size_t k = size_t(i);
-        return VertexIn{glm::dvec4(deferred_pos_[k]), deferred_normal_.empty() ? normal_ : deferred_normal_[k],
-                        deferred_color_.empty() ? color_ : deferred_color_[k]};
+        return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
+                        list_color_.empty() ? color_ : list_color_[k]};
       },
-      0, GLint(deferred_pos_.size()));
+      0, GLint(list_pos_.size()));
 }
 
 }  // namespace ffc::state
