@@ -57,7 +57,7 @@ void Context::update_vertex_constants() {
 // rounded as Mesa rounds them, float_matrix.h).
 template <typename T, int N>
 struct StageOut {
-  glm::vec<4, T> clip[N];
+  glm::vec<4, T> clip[N];       // unless the caller names where the clip positions go
   double fog[N];                // |eye z|, where fog reads it
   lighting::Lit<T> lit[N];      // lighting on: both faces' colours
   glm::dvec4 unlit[N];          // lighting off: the colour clamped
@@ -80,18 +80,19 @@ class VertexStage {
 
   bool fog_depth() const { return fog_depth_; }
 
-  // Vertices fetch(first + j), j in [0, m), m <= N, into out[0, m); `zero_normal` set when a
-  // normal of length 0 is normalized.
+  // Vertices fetch(first + j), j in [0, m), m <= N, into out[0, m), their clip positions into
+  // clip[0, m) (out.clip by default); `zero_normal` set when a normal of length 0 is normalized.
   template <int N, class Fetch>
-  void run(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal) const {
+  void run(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal, V4* clip = nullptr) const {
+    if (!clip) clip = out.clip;
     V4 eye[N], color[N];
     V3 normal[N];
     glm::dvec3 raw[N];  // object-space normals, to eye space in a second loop (it vectorizes apart)
     const bool lit = c_.lighting_, at_w = !c_.spec_;  // kept in registers over the loop
     for (int j = 0; j < m; ++j) {
       const VertexIn in = fetch(first + j);
-      V4 e;  // eye space, where the lighting or fog reads it
-      transform(in.obj, out.clip[j], e);
+      V4& e = eye[j];  // eye space, where the lighting or fog reads it
+      transform(in.obj, clip[j], e);
       // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
       // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
       // current fog coordinate, which stays 0 here (no glFogCoord).
@@ -104,12 +105,14 @@ class VertexStage {
       // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
       // takes x, y, z as they are (docs/deviations.md). The lighting divides unless w is 1.
       if (at_w) e.w = 1;
-      eye[j] = e;
       color[j] = V4(in.color);
       raw[j] = in.normal;
     }
     if (!lit) return;
-    for (int j = 0; j < m; ++j) normal[j] = V3(eye_normal(raw[j], zero_normal));
+    const glm::dmat3 inv = inv_;  // locals: kept in registers over the loop
+    const double rescale = rescale_;
+    const bool normalize = c_.normalize_;
+    for (int j = 0; j < m; ++j) normal[j] = V3(eye_normal(raw[j], inv, normalize, rescale, zero_normal));
     if (!lit) return;
     if constexpr (std::is_same_v<T, float>) c_.kernel_f_(c_.prepared_f_, eye, normal, color, size_t(m), out.lit);
     else c_.kernel_d_(c_.prepared_d_, eye, normal, color, size_t(m), out.lit);
@@ -131,14 +134,15 @@ class VertexStage {
   // An object-space normal to eye space: a row vector times M^-1 (the inverse transpose), then
   // normalized (a zero normal stays zero, ambient and emission only, and is reported) or rescaled,
   // in double as glm computes them.
-  glm::dvec3 eye_normal(const glm::dvec3& raw, bool* zero_normal) const {
-    glm::dvec3 n = raw * inv_;
-    if (c_.normalize_) {
+  static glm::dvec3 eye_normal(const glm::dvec3& raw, const glm::dmat3& inv, bool normalize, double rescale,
+                               bool* zero_normal) {
+    glm::dvec3 n = raw * inv;
+    if (normalize) {
       const double len = glm::length(n);
       if (len > 0) n /= len;
       else *zero_normal = true;
-    } else if (rescale_ > 0) {
-      n /= rescale_;
+    } else if (rescale > 0) {
+      n /= rescale;
     }
     return n;
   }
@@ -267,11 +271,10 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
     StageOut<float, kBatch> s;
     for (GLint b = lo; b < hi; b += kBatch) {
       const int m = int(std::min<GLint>(kBatch, hi - b));
-      stage.run(fetch, b, m, s, zero);
+      stage.run(fetch, b, m, s, zero, &out.clip[size_t(b - first)]);  // straight to the list
       const size_t at = size_t(b - first);
       for (int j = 0; j < m; ++j) {
         const size_t o = at + size_t(j);
-        out.clip[o] = s.clip[j];
         if (!lighting_) {
           out.hot[o].color = glm::vec4(s.unlit[j]);
           continue;
