@@ -69,6 +69,7 @@ template <typename T>
 class VertexStage {
   using V4 = glm::vec<4, T>;
   using V3 = glm::vec<3, T>;
+  using M4 = glm::mat<4, 4, T>;
 
  public:
   using Scalar = T;
@@ -88,11 +89,16 @@ class VertexStage {
     V4 eye[N], color[N];
     V3 normal[N];
     glm::dvec3 raw[N];  // object-space normals, to eye space in a second loop (it vectorizes apart)
-    const bool lit = c_.lighting_, at_w = !c_.spec_;  // kept in registers over the loop
+    // Locals, not the context's members: the stores to `clip` (floats) could alias those, and
+    // the loop would load the matrices again for every vertex.
+    const bool lit = c_.lighting_, at_w = !c_.spec_, need_eye = lit || fog_depth_;
+    M4 to_clip, to_eye;
+    if constexpr (std::is_same_v<T, float>) to_clip = c_.mvp_f_, to_eye = c_.modelview_f_.back().values();
+    else to_clip = c_.projection_.back(), to_eye = c_.modelview_.back();
     for (int j = 0; j < m; ++j) {
       const VertexIn in = fetch(first + j);
       V4& e = eye[j];  // eye space, where the lighting or fog reads it
-      transform(in.obj, clip[j], e);
+      transform(in.obj, to_clip, to_eye, need_eye, clip[j], e);
       // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
       // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
       // current fog coordinate, which stays 0 here (no glFogCoord).
@@ -119,15 +125,16 @@ class VertexStage {
   }
 
  private:
-  // Eye and clip position: in float as Mesa computes them, or in double.
-  void transform(const glm::dvec4& obj, V4& clip, V4& eye) const {
+  // Eye and clip position: in float as Mesa computes them (clip from the MVP; the eye position
+  // only where it is read), or in double (clip from the eye position).
+  static void transform(const glm::dvec4& obj, const M4& to_clip, const M4& to_eye, bool need_eye, V4& clip, V4& eye) {
     if constexpr (std::is_same_v<T, float>) {
       const glm::vec4 of(obj);
-      clip = fmat::transform(c_.mvp_f_, of);
-      eye = c_.lighting_ || fog_depth_ ? fmat::transform(c_.modelview_f_.back().values(), of) : glm::vec4(0);
+      clip = fmat::transform(to_clip, of);
+      eye = need_eye ? fmat::transform(to_eye, of) : glm::vec4(0);
     } else {
-      eye = c_.modelview_.back() * obj;
-      clip = c_.projection_.back() * eye;
+      eye = to_eye * obj;
+      clip = to_clip * eye;
     }
   }
 
