@@ -1,5 +1,7 @@
 #include "raster/box.h"
 
+#if FFCOMPAT_X86  // the whole file: AVX-512 kernels
+
 // GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
 // reports wherever they are inlined.
 #pragma GCC diagnostic ignored "-Wuninitialized"
@@ -169,3 +171,5 @@ template uint64_t box_shade<kAnyDepth>(Framebuffer&, const BoxPlanes&, int, int,
 }  // namespace ffc::raster::detail
 
 #pragma GCC pop_options
+
+#endif  // FFCOMPAT_X86

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "raster/isa.h"
 #include "raster/raster.h"
 
 namespace ffc::raster::detail {
@@ -17,9 +18,14 @@ enum DepthMode : int;
 
 // Whether this kernel and the eight-triangle setup run: the CPU has AVX-512VL, and tests have not
 // turned them off (to hold them to the scalar code, bit for bit).
+#if FFCOMPAT_X86
 extern bool g_wide_kernels;
 inline bool wide_kernels() { return g_wide_kernels; }
 void set_wide_kernels(bool on);
+#else
+constexpr bool wide_kernels() { return false; }  // not built: no x86 intrinsics
+inline void set_wide_kernels(bool) {}
+#endif
 
 // A triangle's inputs, read in place: field k at base[k * stride] (stride 1: one triangle's own
 // arrays; 8: one lane of eight triangles set up together).

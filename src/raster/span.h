@@ -1,7 +1,10 @@
 // The rasterizer's shared inner parts (not an interface): edge setup, attribute planes and the row
 // loop, used by draw_triangles (set-up triangles) and draw_triangle_list (shared vertices).
 #pragma once
+#include "raster/isa.h"
+#if FFCOMPAT_X86
 #include <emmintrin.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -53,8 +56,20 @@ inline bool depth_pass(GLenum func, uint32_t z, uint32_t stored) {
 // 24 bits = float's mantissa + 1). Ties between triangles are decided by these exact bits, so every
 // copy (box_kernels.h depth24x16, setup8 in triangle_list.cpp) computes the same.
 inline uint32_t depth24(float z) {
+#if FFCOMPAT_X86
   const __m128 c = _mm_min_ss(_mm_max_ss(_mm_set_ss(z), _mm_setzero_ps()), _mm_set_ss(1.0f));
   return uint32_t(_mm_cvtss_si32(_mm_mul_ss(c, _mm_set_ss(16777215.0f))));
+#else
+  const float c = std::min(z > 0 ? z : 0.0f, 1.0f);  // maxss's order: a NaN (and -0) to +0
+  return uint32_t(std::nearbyint(c * 16777215.0f));
+#endif
+}
+
+// A colour channel to 8 bits as the SSE loops and the kernels do it: clamped to [0, 1] (a NaN to
+// 0, as maxss), times 255, rounded half to even (the current rounding mode, as cvtps2dq).
+inline uint8_t unorm8(float c) {
+  const float clamped = std::min(c > 0 ? c : 0.0f, 1.0f);
+  return uint8_t(std::nearbyint(clamped * 255.0f));
 }
 
 // The depth plane of a triangle as llvmpipe's setup builds it (lp_state_setup.c, init_args and
@@ -209,7 +224,9 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
   for (int i = 0; i < 3; ++i) thr[i] = t.inclusive[i] ? 0 : 1;
   bool ready = false;
   uint64_t nonfinite = 0;
+#if FFCOMPAT_X86
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
+#endif
   // Pixels lo..hi of row py are covered. Each pixel's values come from the planes at its own
   // centre, (p0 + px X) + py Y, never stepped from a neighbour: the kernels of raster/box.h
   // compute the same bits sixteen pixels at a time.
@@ -218,14 +235,21 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!planes()) return false;
       ready = true;
     }
+#if FFCOMPAT_X86
     if (hi - lo >= 15 && wide_kernels()) {  // the long rows of large triangles
       nonfinite += span_shade<D>(fb, {t.z, t.inv_w, 1}, py, lo, hi, depth_func);
       return true;
     }
+#endif
     // py Y once for the row: the same products, so the same bits.
     const double y = py + 0.5;
     const float fy = float(y), iwy = t.inv_w[2] * fy, y_down = float(fb.height - 1 - py);
+#if FFCOMPAT_X86
     const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
+#else
+    float cy[4];
+    for (int k = 0; k < 4; ++k) cy[k] = t.cy[k] * fy;
+#endif
     uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
     uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
     for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
@@ -240,6 +264,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       }
       if (pass) {
         const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + iwy;
+#if FFCOMPAT_X86
         const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), cy);
         // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
         __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
@@ -249,6 +274,16 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
         const __m128i i16 = _mm_packs_epi32(i32, i32);
         const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
         std::memcpy(o, &rgba, 4);
+#else
+        const float inv = 1.0f / iw;
+        bool finite = true;
+        for (int k = 0; k < 4; ++k) {
+          const float c = ((t.c0[k] + t.cx[k] * fx) + cy[k]) * inv;
+          finite &= std::isfinite(c);
+          o[k] = unorm8(c);
+        }
+        nonfinite += !finite;
+#endif
       }
     }
     return true;
@@ -261,15 +296,27 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
     // at once, lanes (0,0) (1,0) (0,1) (1,1), edge functions relative to the first centre in 32
     // bits (the vertices lie within a few pixels of it).
     const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;
+#if FFCOMPAT_X86
     __m128i in = _mm_set1_epi32(-1);
+#else
+    unsigned mask = 0xF;
+#endif
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3, k = (i + 2) % 3;
       const int32_t dx = int32_t(t.x[k] - t.x[j]), dy = int32_t(t.y[k] - t.y[j]);
       const int32_t e = dx * int32_t(oy - t.y[j]) - dy * int32_t(ox - t.x[j]), ea = -dy * 256, eb = dx * 256;
+#if FFCOMPAT_X86
       const __m128i lanes = _mm_set_epi32(e + ea + eb, e + eb, e + ea, e);
       in = _mm_and_si128(in, _mm_cmpgt_epi32(lanes, _mm_set1_epi32(int32_t(thr[i]) - 1)));
+#else
+      const int32_t lanes[4] = {e, e + ea, e + eb, e + ea + eb};
+      for (unsigned lane = 0; lane < 4; ++lane)
+        if (lanes[lane] < thr[i]) mask &= ~(1u << lane);
+#endif
     }
+#if FFCOMPAT_X86
     unsigned mask = unsigned(_mm_movemask_ps(_mm_castsi128_ps(in)));
+#endif
     if (t.xmax == t.xmin) mask &= 0x5;
     if (t.ymax == t.ymin) mask &= 0x3;
     for (int row = 0; mask; ++row, mask >>= 2) {
@@ -277,6 +324,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
       if (!(mask & 3) || !bands.owns(py / kBandRows)) continue;
       if (!draw_span(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
     }
+#if FFCOMPAT_X86
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
     // Edge functions in 32 bits: at most 8x8 pixel centres (most triangles of a subdivided
     // sphere) by the box kernel, larger boxes in rows of sixteen pixels.
@@ -324,7 +372,9 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
         if (!draw_span(py, t.xmin + __builtin_ctz(mask), t.xmin + 31 - __builtin_clz(mask))) return;
       }
     }
+#endif
   } else {
+    // Without SSE2 also the small ones: the same pixels, found by another exact computation.
     // Large: each row's span is solved for in 64 bits, not searched.
     int64_t a[3], b[3], c[3];
     for (int i = 0; i < 3; ++i) {

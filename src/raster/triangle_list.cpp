@@ -1,23 +1,23 @@
 #include "raster/triangle_list.h"
 
+#include "raster/span.h"
+
+#include <array>
+#include <cmath>
+
+#if FFCOMPAT_X86
 // GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
 // reports wherever they are inlined.
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
-#include "raster/span.h"
-
-#include <emmintrin.h>
 #include <immintrin.h>
-#include <xmmintrin.h>
-
-#include <array>
-#include <cmath>
 
 #pragma GCC push_options
 #pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
 #include "raster/box_kernels.h"
 #pragma GCC pop_options
+#endif
 
 namespace ffc::raster {
 
@@ -37,6 +37,7 @@ void map_one(ShadedVertices& vs, size_t i, const State& s) {
   vs.snapped[i] = {int32_t(w.sx), int32_t(w.sy)};
 }
 
+#if FFCOMPAT_X86
 // Fused multiply-add of four floats: one instruction where the CPU has it, four library calls
 // otherwise; the same bits.
 struct FmaInstruction {
@@ -96,15 +97,18 @@ bool map_four(ShadedVertices& vs, size_t i, const State& s) {
   }
   return true;
 }
+#endif
 
 }  // namespace
 
 void map_shaded(ShadedVertices& vs, size_t first, size_t count, const State& s) {
-  static const bool fma = __builtin_cpu_supports("fma");
   size_t i = first;
+#if FFCOMPAT_X86
+  static const bool fma = __builtin_cpu_supports("fma");
   for (; i + 4 <= first + count; i += 4)
     if (!(fma ? map_four<FmaInstruction>(vs, i, s) : map_four<FmaCall>(vs, i, s)))
       for (size_t k = i; k < i + 4; ++k) map_one(vs, k, s);
+#endif
   for (; i < first + count; ++i) map_one(vs, i, s);
 }
 
@@ -152,6 +156,7 @@ void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const detail::
   }
 }
 
+#if FFCOMPAT_X86
 // setup_planes for a smooth triangle without secondary colour, two values per SSE2 register: the
 // same operations in the same order as detail::PlaneSolver, so the same bits, in fewer steps.
 bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], float fbh, bool swapped) {
@@ -374,6 +379,7 @@ unsigned chunk_corners(const List& l, const uint32_t* entries, int lanes, uint32
 }
 
 #pragma GCC pop_options
+#endif  // FFCOMPAT_X86
 
 // Sets up and draws, in this thread's bands, a triangle whose vertices are all mapped.
 template <detail::DepthMode D>
@@ -393,7 +399,9 @@ void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)
   auto planes = [&] {
     const bool use_back = back && s.two_side;
     const ShadedVertex* const v[3] = {&l.vs.hot[order[0]], &l.vs.hot[order[1]], &l.vs.hot[order[2]]};
+#if FFCOMPAT_X86
     if (!s.flat && !s.add_secondary && !use_back) return smooth_planes(t, v, float(s.fb_height), swapped);
+#endif
     const float x[3] = {v[0]->x, v[1]->x, v[2]->x}, yd[3] = {v[0]->y, v[1]->y, v[2]->y}, z[3] = {v[0]->z, v[1]->z, v[2]->z};
     detail::depth_plane(x, yd, z, swapped, t.z);
     glm::dvec3 pos[3];
@@ -436,6 +444,7 @@ void bin_range(const List& l, size_t first, size_t last, int units, uint32_t** o
   }
 }
 
+#if FFCOMPAT_X86
 #pragma GCC push_options
 #pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
 
@@ -506,12 +515,15 @@ size_t bin16(const List& l, size_t first, size_t last, int units, uint32_t** out
 }
 
 #pragma GCC pop_options
+#endif
 
 void bin_share(const List& l, size_t first, size_t last, int units, uint32_t* const* lists, size_t* counts) {
   uint32_t* out[kMaxThreads];  // write pointers, kept in registers rather than counts in memory
   for (int o = 0; o < units; ++o) out[o] = lists[o];
+#if FFCOMPAT_X86
   if (detail::wide_kernels() && l.vs.snapped.size() <= size_t(INT32_MAX))  // gathers take signed 32-bit indices
     first = bin16(l, first, last, units, out);
+#endif
   bin_range(l, first, last, units, out);
   for (int o = 0; o < units; ++o) counts[o] = size_t(out[o] - lists[o]);
 }
@@ -538,6 +550,7 @@ void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* 
   }
 }
 
+#if FFCOMPAT_X86
 #pragma GCC push_options
 #pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
 // The same, eight triangles set up at a time for the box kernel (inline: compiled for AVX-512, as
@@ -597,6 +610,7 @@ void draw_bins_wide(const List& l, const detail::Bands& mine, const uint32_t* co
   if (nonfinite) detail::g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
 }
 #pragma GCC pop_options
+#endif
 
 }  // namespace
 
@@ -634,6 +648,7 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins, const ClearR
     size_t n[kMaxThreads];
     for (int share = 0; share < units; ++share)
       in[share] = bins.lists[size_t(share * units + owner)].data(), n[share] = counts[share][owner];
+#if FFCOMPAT_X86
     if (detail::wide_kernels() && !s.flat && !s.add_secondary && !s.cull && !s.two_side) {
       switch (detail::depth_mode(s)) {
         case detail::kNoDepth: return draw_bins_wide<detail::kNoDepth>(l, mine, in, n, units);
@@ -642,6 +657,7 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins, const ClearR
         case detail::kAnyDepth: return draw_bins_wide<detail::kAnyDepth>(l, mine, in, n, units);
       }
     }
+#endif
     switch (detail::depth_mode(s)) {
       case detail::kNoDepth: return draw_bins<detail::kNoDepth>(l, mine, in, n, units);
       case detail::kLess: return draw_bins<detail::kLess>(l, mine, in, n, units);

@@ -3,14 +3,17 @@
 // lit in batches on every thread into compact records, and the rasterizer reads them in place
 // (raster/triangle_list.h). The same pixels as the general path, which takes every other
 // primitive, feedback and the double pipeline.
-#include <immintrin.h>
-
 #include <algorithm>
+
+#include "raster/isa.h"
+#if FFCOMPAT_X86
+#include <immintrin.h>
 
 // GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
 // reports wherever they are inlined.
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 #include "state/client_arrays.h"
 #include "state/context.h"
@@ -73,7 +76,8 @@ void eye_normals(const glm::dvec3* raw, int m, const glm::dmat3& inv, bool norma
 }  // namespace
 
 // Sixteen at a time with AVX-512 where the CPU has it, else four at a time in SSE2 (which
-// compares signed: the top bit is flipped first).
+// compares signed: the top bit is flipped first); without x86 intrinsics, one at a time.
+#if FFCOMPAT_X86
 namespace {
 __attribute__((target("avx512f"))) void index_range_wide(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
   __m512i vlo = _mm512_set1_epi32(-1), vhi = _mm512_setzero_si512();
@@ -106,6 +110,12 @@ void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
   for (int k = 0; k < 4 && i >= 4; ++k) lo = std::min(lo, l[k]), hi = std::max(hi, h[k]);
   for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
 }
+#else
+void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
+  lo = UINT32_MAX, hi = 0;
+  for (size_t i = 0; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
+}
+#endif
 
 bool Context::shaded_path(GLenum mode) const {
   // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the
