@@ -1,6 +1,6 @@
 #include "raster/raster.h"
 #include "raster/reference.h"
-#include "raster/span.h"
+#include "raster/row_loop.h"
 #include "raster/workers.h"
 
 #include <algorithm>

@@ -1,8 +1,8 @@
-// The box kernel (raster/box.h: boxes of at most 8x8 pixel centres, 16 pixels at a time), the span
-// kernel (long rows of large triangles) and the eight-triangle setup of triangle lists draw what
-// the scalar row loop draws, bit for bit: many
-// small triangles of random size, place, depth, 1/w and colour, under every depth function, with
-// 1 to 3 threads (rows in bands of 64), cut by the framebuffer's edges.
+// The AVX-512 kernels (raster/avx512/: the box kernel for boxes of at most 8x8 pixel centres,
+// the span kernel for long rows of large triangles, the rows kernel) and the eight-triangle setup
+// of triangle lists draw what the row loop draws, bit for bit: many small triangles of random
+// size, place, depth, 1/w and colour, under every depth function, with 1 to 3 threads (rows in
+// bands of 64), cut by the framebuffer's edges.
 #include <gtest/gtest.h>
 
 #include "triangles.h"
