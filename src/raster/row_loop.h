@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include "raster/avx512/kernels.h"
 #include "raster/pixel_rules.h"
@@ -38,6 +39,17 @@ enum DepthMode : int { kNoDepth, kLess, kLequal, kAnyDepth };
 inline DepthMode depth_mode(const State& s) {
   if (!s.depth_test) return kNoDepth;
   return s.depth_func == GL_LESS ? kLess : s.depth_func == GL_LEQUAL ? kLequal : kAnyDepth;
+}
+// Calls f(mode) with the state's depth mode as a compile-time constant (std::integral_constant):
+// the one switch from the run-time depth function to the loops compiled for it.
+template <typename F>
+void with_depth_mode(const State& s, F&& f) {
+  switch (depth_mode(s)) {
+    case kNoDepth: return f(std::integral_constant<DepthMode, kNoDepth>{});
+    case kLess: return f(std::integral_constant<DepthMode, kLess>{});
+    case kLequal: return f(std::integral_constant<DepthMode, kLequal>{});
+    case kAnyDepth: return f(std::integral_constant<DepthMode, kAnyDepth>{});
+  }
 }
 
 // Triangles under fog or polygon offset (State::fragment_ops): the pixels rasterize() covers,
@@ -103,9 +115,8 @@ inline unsigned cover_2x2(const Triangle& t) {
 }
 
 // Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands.
-// `planes()` fills t's planes
-// and is called once, before the first covered pixel (most tiny triangles cover none); false
-// from it drops the triangle.
+// `planes()` fills t's planes and is called once, before the first covered pixel (most tiny
+// triangles cover none); false from it drops the triangle.
 template <DepthMode D, typename Planes>
 void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
   bool ready = false;
@@ -242,12 +253,7 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
 // The same for a run-time depth function.
 template <typename Planes>
 void rasterize(Framebuffer& fb, Triangle& t, const State& s, const Bands& bands, Planes&& planes) {
-  switch (depth_mode(s)) {
-    case kNoDepth: return rasterize<kNoDepth>(fb, t, s.depth_func, bands, planes);
-    case kLess: return rasterize<kLess>(fb, t, s.depth_func, bands, planes);
-    case kLequal: return rasterize<kLequal>(fb, t, s.depth_func, bands, planes);
-    case kAnyDepth: return rasterize<kAnyDepth>(fb, t, s.depth_func, bands, planes);
-  }
+  with_depth_mode(s, [&](auto mode) { rasterize<decltype(mode)::value>(fb, t, s.depth_func, bands, planes); });
 }
 
 }  // namespace ffc::raster::detail

@@ -273,21 +273,10 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins, const ClearR
     for (int share = 0; share < units; ++share)
       in[share] = bins.lists[size_t(share * units + owner)].data(), n[share] = counts[share][owner];
 #if FFCOMPAT_X86
-    if (detail::wide_kernels() && !s.flat && !s.add_secondary && !s.cull && !s.two_side) {
-      switch (detail::depth_mode(s)) {
-        case detail::kNoDepth: return draw_bins_wide<detail::kNoDepth>(l, mine, in, n, units);
-        case detail::kLess: return draw_bins_wide<detail::kLess>(l, mine, in, n, units);
-        case detail::kLequal: return draw_bins_wide<detail::kLequal>(l, mine, in, n, units);
-        case detail::kAnyDepth: return draw_bins_wide<detail::kAnyDepth>(l, mine, in, n, units);
-      }
-    }
+    if (detail::wide_kernels() && !s.flat && !s.add_secondary && !s.cull && !s.two_side)
+      return with_depth_mode(s, [&](auto mode) { draw_bins_wide<decltype(mode)::value>(l, mine, in, n, units); });
 #endif
-    switch (detail::depth_mode(s)) {
-      case detail::kNoDepth: return draw_bins<detail::kNoDepth>(l, mine, in, n, units);
-      case detail::kLess: return draw_bins<detail::kLess>(l, mine, in, n, units);
-      case detail::kLequal: return draw_bins<detail::kLequal>(l, mine, in, n, units);
-      case detail::kAnyDepth: return draw_bins<detail::kAnyDepth>(l, mine, in, n, units);
-    }
+    with_depth_mode(s, [&](auto mode) { draw_bins<decltype(mode)::value>(l, mine, in, n, units); });
   };
   if (units == 1) return bin(0), draw(0);
   workers.run(bin, units);

@@ -15,7 +15,7 @@ using namespace raster_test;
 class BoxKernel : public ::testing::TestWithParam<GLenum> {
  protected:
   void SetUp() override {
-    if (!raster::detail::wide_kernels()) GTEST_SKIP() << "this CPU has no AVX-512VL: the kernel does not run";
+    if (!raster::detail::wide_kernels()) GTEST_SKIP() << "no kernels: no AVX-512VL, or built without x86 intrinsics";
   }
 };
 
@@ -37,7 +37,7 @@ TEST_P(BoxKernel, DrawsWhatTheScalarRowLoopDraws) {
 
 // Triangles across the bands' edges: each thread draws its own rows of them, no more, no fewer.
 TEST(BoxKernelBands, TrianglesAcrossBandEdgesDrawEachRowOnce) {
-  if (!raster::detail::wide_kernels()) GTEST_SKIP() << "this CPU has no AVX-512VL: the kernel does not run";
+  if (!raster::detail::wide_kernels()) GTEST_SKIP() << "no kernels: no AVX-512VL, or built without x86 intrinsics";
   for (float size : {2.0f, 3.0f, 6.0f}) {
     const Triangles t = random_triangles(4000, size, 11 + unsigned(size), true);
     for (GLenum func : {GL_LESS, GL_ALWAYS}) {
