@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "cli/common.h"
-#include "raster/box.h"
+#include "raster/avx512/kernels.h"
 #include "state/context.h"
 
 namespace ffc::cli {

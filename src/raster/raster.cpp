@@ -1,14 +1,17 @@
 #include "raster/raster.h"
 #include "raster/reference.h"
-#include "raster/span.h"
+#include "raster/row_loop.h"
 #include "raster/workers.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
-#include <emmintrin.h>
+
+#include "raster/isa.h"
+#if FFCOMPAT_X86
 #include <xmmintrin.h>
+#endif
 
 namespace ffc::raster {
 
@@ -155,15 +158,22 @@ ClipPolygon<T> clip_line(const ClipVertex<T>& a, const ClipVertex<T>& b, Made&& 
 }  // namespace
 
 namespace {
-// nearbyint(v) for a float, as one cvtss2si in the current (round-to-even) mode when in range.
+// nearbyint(v) for a float in the current (round-to-even) mode: on x86 one cvtss2si when in range.
 int64_t round_even(float v) {
-  return std::fabs(v) < 0x1p30f ? _mm_cvtss_si32(_mm_set_ss(v)) : int64_t(std::nearbyint(v));
+#if FFCOMPAT_X86
+  if (std::fabs(v) < 0x1p30f) return _mm_cvtss_si32(_mm_set_ss(v));
+#endif
+  return int64_t(std::nearbyint(v));
 }
 }  // namespace
 
-// Built twice, with and without FMA instructions (chosen at load time): std::fma is one
-// instruction where the CPU has it, a library call otherwise; the same bits either way.
-__attribute__((target_clones("fma", "default"))) FloatWindow map_float(const glm::vec4& clip, const State& s) {
+// On x86 built twice, with and without FMA instructions (chosen at load time): std::fma is one
+// instruction where the CPU has it, a library call otherwise; the same bits either way. (AArch64
+// always has it.)
+#if FFCOMPAT_X86
+__attribute__((target_clones("fma", "default")))
+#endif
+FloatWindow map_float(const glm::vec4& clip, const State& s) {
   const glm::ivec4 vp = s.viewport;
   const float fiw = 1.0f / clip.w;
   const float nx = clip.x * fiw, ny = clip.y * fiw, nz = clip.z * fiw;

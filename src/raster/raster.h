@@ -59,7 +59,7 @@ struct State {
   // (setup, Triangle::offset).
   bool offset_fill = false;
   float offset_factor = 0, offset_units = 0;
-  // Fog or polygon offset: triangles take the scalar row loop (span.h rasterize_fragment_ops).
+  // Fog or polygon offset: triangles take the scalar row loop (row_loop.h rasterize_fragment_ops).
   bool fragment_ops() const { return fog || offset_fill; }
 };
 
@@ -158,7 +158,7 @@ struct Triangle {
   int xmin, xmax, ymin, ymax;
   // Planes: value at pixel centre (X, Y) = p0 + px X + py Y: 1/w and colour / w (secondary colour
   // summed in) in float, as llvmpipe's. Depth: llvmpipe's own plane, {a0, dz/dx, dz/dy} at pixel
-  // (X, row from the top) (span.h depth_plane, depth_at).
+  // (X, row from the top) (setup.h depth_plane, pixel_rules.h depth_at).
   float z[3];
   float inv_w[3], c0[4], cx[4], cy[4];  // one after another: the box kernel reads them as 15 floats
   // Set only under State::fragment_ops(): the planes of fog coordinate / w and of 1/w (inv_w is

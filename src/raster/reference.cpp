@@ -3,19 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "raster/span.h"
+#include "raster/pixel_rules.h"
 
 namespace ffc::raster {
 
 namespace {
 bool g_reference = false;
-
-// A colour channel to 8 bits: clamped to [0, 1] (a NaN to 0), times 255, rounded half to even
-// (the current rounding mode, as the SSE conversion the fast paths use).
-uint8_t channel_to_unorm8(float c) {
-  const float clamped = std::min(std::isnan(c) ? 0.0f : std::max(c, 0.0f), 1.0f);
-  return uint8_t(std::lrint(clamped * 255.0f));
-}
 }  // namespace
 
 void set_reference_rasterizer(bool on) { g_reference = on; }
@@ -62,7 +55,7 @@ void draw_reference(Framebuffer& fb, const Triangle& t, const State& s) {
       for (int k = 0; k < 4; ++k) {
         const float c = ((t.c0[k] + t.cx[k] * x) + t.cy[k] * y) * scale;
         finite &= std::isfinite(c);
-        fb.color[at * 4 + size_t(k)] = channel_to_unorm8(c);
+        fb.color[at * 4 + size_t(k)] = detail::unorm8(c);  // clamped, a NaN to 0, half to even
       }
       nonfinite += !finite;
     }

@@ -1,7 +1,7 @@
 // Triangles that share their vertices, as glDrawArrays, glDrawElements and immediate mode give
 // them. Each vertex is mapped to the window once; each triangle is binned once, as a 4-byte
 // number, to the threads whose bands of rows it meets (sixteen triangles at a time with AVX-512),
-// and set up where it is drawn: eight at a time for the box kernel (raster/box.h) when the state
+// and set up where it is drawn: eight at a time for the box kernel (raster/avx512/kernels.h) when the state
 // is smooth colour without secondary colour, culling or two-sided lighting, one by one otherwise.
 #pragma once
 #include <climits>

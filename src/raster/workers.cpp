@@ -1,10 +1,25 @@
 #include "raster/workers.h"
 
-#include <emmintrin.h>
-
 #include <algorithm>
 
+#include "raster/isa.h"
+#if FFCOMPAT_X86
+#include <emmintrin.h>
+#endif
+
 namespace ffc::raster {
+
+namespace {
+// A hint to the CPU inside a spin loop (x86 pause, Arm yield): the other hyperthread runs, and
+// leaving the loop costs no mispredicted memory order. Elsewhere nothing: the loop is the same.
+inline void spin_pause() {
+#if FFCOMPAT_X86
+  _mm_pause();
+#elif defined(__aarch64__) || defined(__arm__)
+  __asm__ __volatile__("yield");
+#endif
+}
+}  // namespace
 
 Workers::Workers(int threads) {
   for (int i = 1; i < std::min(threads, kMax); ++i) threads_.emplace_back([this] { loop(); });
@@ -37,7 +52,7 @@ void Workers::run_impl(void* fn, void (*call)(void*, int), int shares) {
   wake_.notify_all();
   take_shares(generation);
   // The shares are about equal: the others finish soon after this one, so spin rather than sleep.
-  while (done_.load(std::memory_order_acquire) != shares) _mm_pause();
+  while (done_.load(std::memory_order_acquire) != shares) spin_pause();
 }
 
 void Workers::take_shares(uint64_t generation) {
@@ -56,7 +71,7 @@ void Workers::loop() {
   uint64_t seen = 0;
   for (;;) {
     // A draw's phases follow each other within microseconds: spin a little before sleeping.
-    for (int spin = 0; spin < 20000 && generation_.load(std::memory_order_acquire) == seen; ++spin) _mm_pause();
+    for (int spin = 0; spin < 20000 && generation_.load(std::memory_order_acquire) == seen; ++spin) spin_pause();
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return generation_.load() != seen; });

@@ -101,7 +101,7 @@ std::vector<SweepView> camera_sweep() {
 
 const std::vector<KnownPixelFailure>& known_pixel_failures() {
   // Empty: the 18 views at height 3 listed when the sweep was added (on a branch without llvmpipe's
-  // float depth plane) pass since soft computes depth as llvmpipe does (raster/span.h). Each
+  // float depth plane) pass since soft computes depth as llvmpipe does (raster/pixel_rules.h, raster/setup.h). Each
   // failed at one or two pixels, measured on that branch: a pixel centre on an edge that a lit
   // face and a face lit by ambient only (0.3 red, 76 of 255) both reach, at the same depth up to
   // rounding, so the exact bits decide which face shows (and at angle 234 the red axis's tip,

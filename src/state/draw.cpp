@@ -1,14 +1,17 @@
 // glDrawArrays and glDrawElements (GL 2.1 section 2.8): validation, then the choice of path: the
 // triangle-list path for GL_TRIANGLES while rendering in float, the general path (vertex by
 // vertex, then primitive assembly) for everything else.
-#include <immintrin.h>
-
 #include <algorithm>
+
+#include "raster/isa.h"
+#if FFCOMPAT_X86
+#include <immintrin.h>
 
 // GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
 // reports wherever they are inlined.
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 #include "state/client_arrays.h"
 #include "state/context.h"
@@ -119,7 +122,8 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   elements_.clear();
 }
 // Sixteen at a time with AVX-512 where the CPU has it, else four at a time in SSE2 (which
-// compares signed: the top bit is flipped first).
+// compares signed: the top bit is flipped first); without x86 intrinsics, one at a time.
+#if FFCOMPAT_X86
 namespace {
 __attribute__((target("avx512f"))) void index_range_wide(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
   __m512i vlo = _mm512_set1_epi32(-1), vhi = _mm512_setzero_si512();
@@ -152,6 +156,12 @@ void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
   for (int k = 0; k < 4 && i >= 4; ++k) lo = std::min(lo, l[k]), hi = std::max(hi, h[k]);
   for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
 }
+#else
+void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
+  lo = UINT32_MAX, hi = 0;
+  for (size_t i = 0; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
+}
+#endif
 
 bool Context::triangle_list_path(GLenum mode) const {
   // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the

@@ -2,7 +2,10 @@
 // these beside the double matrices so that its window positions round exactly as llvmpipe's: a
 // vertex a 1/10000 pixel from an edge then lands on the same side, and coverage matches.
 #pragma once
+#include "raster/isa.h"
+#if FFCOMPAT_X86
 #include <xmmintrin.h>
+#endif
 
 #include <cmath>
 #include <cstring>
@@ -21,8 +24,9 @@ inline glm::mat4 mul(const glm::mat4& a, const glm::mat4& b) {
 }
 
 // m * v, summed left to right as the fixed-function vertex program's dot products.
-// The four rows at once in SSE, each summed in the same order.
+// On x86 the four rows at once in SSE, each summed in the same order.
 inline glm::vec4 transform(const glm::mat4& m, const glm::vec4& v) {
+#if FFCOMPAT_X86
   const __m128 r = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&m[0][0]), _mm_set1_ps(v.x)),
                                                     _mm_mul_ps(_mm_loadu_ps(&m[1][0]), _mm_set1_ps(v.y))),
                                          _mm_mul_ps(_mm_loadu_ps(&m[2][0]), _mm_set1_ps(v.z))),
@@ -30,6 +34,11 @@ inline glm::vec4 transform(const glm::mat4& m, const glm::vec4& v) {
   glm::vec4 out;
   _mm_storeu_ps(&out[0], r);
   return out;
+#else
+  glm::vec4 out;
+  for (int r = 0; r < 4; ++r) out[r] = ((m[0][r] * v.x + m[1][r] * v.y) + m[2][r] * v.z) + m[3][r] * v.w;
+  return out;
+#endif
 }
 
 // glRotatef's matrix: axis-aligned rotations are built directly, others from the normalized axis.

@@ -17,7 +17,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "raster/span.h"
+#include "raster/pixel_rules.h"
 #include "state/context.h"
 #include "state/float_matrix.h"
 

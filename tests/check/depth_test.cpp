@@ -1,6 +1,6 @@
 // Depth as Mesa's llvmpipe computes it: which of two triangles at (nearly) the same depth covers
 // a pixel depends on the exact float bits of llvmpipe's depth plane and of its conversion to the
-// 24-bit buffer (raster/span.h depth_plane, depth_at, depth24), so the depth buffer itself is
+// 24-bit buffer (raster/setup.h depth_plane, raster/pixel_rules.h depth_at, depth24), so the depth buffer itself is
 // compared with Mesa's, value for value. Generated cases: random triangles in random vertex order
 // (clockwise and counter-clockwise) under random perspective cameras and random depth ranges,
 // reversed ones among them.

@@ -1,7 +1,7 @@
 // Depth ties as Mesa's llvmpipe decides them: a mesh drawn a second time over itself, triangles
 // overlapping in one plane, and lines and points lying on triangles, under every depth function.
 // Where two fragments have (nearly) the same depth, which one stays depends on the exact bits of
-// llvmpipe's float depth planes (triangles: raster/span.h; lines: draw_line), on the vertex order
+// llvmpipe's float depth planes (triangles: raster/setup.h, raster/pixel_rules.h; lines: draw_line), on the vertex order
 // it sets up and on the 24-bit conversion; the colour and the depth buffers must both equal
 // Mesa's, value for value. Each draw has one colour from glColor3ub, which interpolates to itself,
 // so any difference is a coverage or depth decision.
@@ -23,7 +23,7 @@
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/image.h"
-#include "raster/box.h"
+#include "raster/avx512/kernels.h"
 #include "state/context.h"
 
 namespace ffc {

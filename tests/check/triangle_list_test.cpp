@@ -2,13 +2,13 @@
 // vertices lit in batches, triangles binned to the threads that own their rows) draws what the
 // general path draws (vertex by vertex, triangles set up and then rasterized), bit for bit,
 // whatever the state and the number of threads; and with the box kernel and the eight-triangle
-// setup (raster/box.h) what the scalar row loop draws.
+// setup (raster/avx512/) what the scalar row loop draws.
 #include <gtest/gtest.h>
 
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
-#include "raster/box.h"
+#include "raster/avx512/kernels.h"
 #include "scene/scene.h"
 #include "state/context.h"
 

@@ -7,7 +7,7 @@
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
-#include "raster/box.h"
+#include "raster/avx512/kernels.h"
 #include "raster/raster.h"
 #include "raster/reference.h"
 #include "state/context.h"

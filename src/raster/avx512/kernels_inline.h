@@ -1,15 +1,15 @@
-// The box kernel's parts, inline: coverage of a box of at most 8x8 pixel centres and its blocks'
-// depth and colour. Included only where AVX-512 code is compiled (after #pragma GCC target
-// "avx2,avx512f,avx512vl,avx512dq"): by box.cpp, and by triangle_list.cpp so that its draw loop
-// draws a triangle without a call.
+// The kernels' parts, inline: coverage of a box of at most 8x8 pixel centres and its blocks'
+// depth and colour, the vector forms of pixel_rules.h (depth24x16, pack_rgba). Included only where
+// AVX-512 code is compiled (after #pragma GCC target "avx2,avx512f,avx512vl,avx512dq"): by
+// kernels.cpp, and by triangle_list_avx512.cpp so that its draw loop draws a triangle without a call.
 #pragma once
 #include <immintrin.h>
 
 #include <array>
 #include <cstddef>
 
-#include "raster/box.h"
-#include "raster/span.h"
+#include "raster/avx512/kernels.h"
+#include "raster/row_loop.h"
 
 namespace ffc::raster::detail {
 
@@ -93,7 +93,7 @@ __m512i pack_rgba(const __m512 (&over_w)[4], __m512 inv, __mmask16& bad) {
 }
 
 template <DepthMode D, bool Wide>
-__attribute__((always_inline)) inline uint64_t shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
+__attribute__((always_inline)) inline uint64_t shade(Framebuffer& fb, const KernelPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
   constexpr int kRows = Wide ? 2 : 4;  // per block
   // Centres: X = x + 0.5 and Y = y + 0.5 exactly, as lane offsets added to the block's corner.
   const __m512i dy = lane_dy(Wide);
@@ -151,7 +151,7 @@ constexpr std::array<uint16_t, 16> kRowLanes4 = [] {
 }();
 constexpr uint16_t kRowLanes8[4] = {0x0000, 0x00FF, 0xFF00, 0xFFFF};
 
-__attribute__((always_inline)) inline BoxCoverage coverage(const BoxEdges& t, const Bands& bands) {
+__attribute__((always_inline)) inline BoxCoverage coverage(const KernelEdges& t, const Bands& bands) {
   BoxCoverage c;
   const int xmin = t(kXmin), ymin = t(kYmin), ymax = t(kYmax), w = t(kXmax) - xmin + 1, h = ymax - ymin + 1;
   c.wide = w > 4;
@@ -187,7 +187,7 @@ __attribute__((always_inline)) inline BoxCoverage coverage(const BoxEdges& t, co
 
 // Coverage, then depth and colour, for planes known to be within float.
 template <DepthMode D>
-__attribute__((always_inline)) inline uint64_t box_draw_inline(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p,
+__attribute__((always_inline)) inline uint64_t box_draw_inline(Framebuffer& fb, const KernelEdges& e, const KernelPlanes& p,
                                                                 const Bands& bands, GLenum depth_func) {
   const BoxCoverage c = coverage(e, bands);
   if (!c.blocks) return 0;

@@ -1,4 +1,8 @@
-#include "raster/box.h"
+// The kernels of kernels.h, built for AVX-512 (the CPU is asked at run time), and the switch that
+// turns them on.
+#include "raster/avx512/kernels.h"
+
+#if FFCOMPAT_X86  // the whole file
 
 // GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
 // reports wherever they are inlined.
@@ -7,7 +11,7 @@
 
 #include <immintrin.h>
 
-#include "raster/span.h"
+#include "raster/row_loop.h"
 
 #include <algorithm>
 #include <array>
@@ -29,15 +33,12 @@ void set_wide_kernels(bool on) { g_wide_kernels = on && cpu_has_kernel_isa(); }
 static_assert(offsetof(Triangle, cy) + 4 * sizeof(float) == offsetof(Triangle, inv_w) + kPlaneFloats * sizeof(float),
               "Triangle's planes are read as one array of floats");
 
-void box_edges(const Triangle& t, int32_t (&out)[kEdgeFields]) {
+void kernel_edges(const Triangle& t, int32_t (&out)[kEdgeFields]) {
   out[kXmin] = t.xmin, out[kYmin] = t.ymin, out[kXmax] = t.xmax, out[kYmax] = t.ymax;
-  const int64_t ox = int64_t(t.xmin) * 256 + 128, oy = int64_t(t.ymin) * 256 + 128;
   for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const int32_t ex = int32_t(t.x[k] - t.x[j]), ey = int32_t(t.y[k] - t.y[j]);
-    out[kE0 + i] = ex * int32_t(oy - t.y[j]) - ey * int32_t(ox - t.x[j]);
-    out[kPerX + i] = -ey * 256, out[kPerY + i] = ex * 256;
-    out[kLimit + i] = t.inclusive[i] ? -1 : 0;
+    const EdgeFunction e = edge_function(t, i, t.xmin, t.ymin);
+    out[kE0 + i] = int32_t(e.at), out[kPerX + i] = int32_t(e.per_x), out[kPerY + i] = int32_t(e.per_y);
+    out[kLimit + i] = int32_t(e.limit) - 1;  // e >= limit  as  e > limit - 1
   }
 }
 
@@ -45,14 +46,14 @@ void box_edges(const Triangle& t, int32_t (&out)[kEdgeFields]) {
 
 #pragma GCC push_options
 #pragma GCC target("avx2,avx512f,avx512vl,avx512dq")
-#include "raster/box_kernels.h"
+#include "raster/avx512/kernels_inline.h"
 
 namespace ffc::raster::detail {
 
-BoxCoverage box_coverage(const BoxEdges& t, const Bands& bands) { return coverage(t, bands); }
+BoxCoverage box_coverage(const KernelEdges& t, const Bands& bands) { return coverage(t, bands); }
 
 template <DepthMode D>
-uint64_t box_shade(Framebuffer& fb, const BoxPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
+uint64_t box_shade(Framebuffer& fb, const KernelPlanes& p, int xmin, int ymin, GLenum depth_func, const BoxCoverage& c) {
   return c.wide ? shade<D, true>(fb, p, xmin, ymin, depth_func, c) : shade<D, false>(fb, p, xmin, ymin, depth_func, c);
 }
 
@@ -63,7 +64,7 @@ struct RowPlanes {
   __m512 z0, z1, z2;
   __m512 iw0, iw1, c0[4], cx[4];
   float iw2, cy[4];
-  explicit RowPlanes(const BoxPlanes& p) {
+  explicit RowPlanes(const KernelPlanes& p) {
     const int n = p.stride;
     z0 = _mm512_set1_ps(p.z[0]), z1 = _mm512_set1_ps(p.z[n]), z2 = _mm512_set1_ps(p.z[2 * n]);
     iw0 = _mm512_set1_ps(p.f[0]), iw1 = _mm512_set1_ps(p.f[n]), iw2 = p.f[2 * n];
@@ -112,7 +113,7 @@ uint64_t segment(const RowPlanes& p, const Row& r, int x, __mmask16 lanes, GLenu
 }  // namespace
 
 template <DepthMode D>
-uint64_t span_shade(Framebuffer& fb, const BoxPlanes& p, int y, int lo, int hi, GLenum depth_func) {
+uint64_t span_shade(Framebuffer& fb, const KernelPlanes& p, int y, int lo, int hi, GLenum depth_func) {
   const RowPlanes planes(p);
   const Row row(planes, fb, y);
   uint64_t nonfinite = 0;
@@ -122,7 +123,7 @@ uint64_t span_shade(Framebuffer& fb, const BoxPlanes& p, int y, int lo, int hi, 
 }
 
 template <DepthMode D>
-uint64_t rows_shade(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, const Bands& bands, GLenum depth_func) {
+uint64_t rows_shade(Framebuffer& fb, const KernelEdges& e, const KernelPlanes& p, const Bands& bands, GLenum depth_func) {
   const RowPlanes planes(p);
   const int xmin = e(kXmin), ymin = e(kYmin), xmax = e(kXmax), ymax = e(kYmax);
   const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
@@ -153,19 +154,21 @@ uint64_t rows_shade(Framebuffer& fb, const BoxEdges& e, const BoxPlanes& p, cons
   return nonfinite;
 }
 
-template uint64_t rows_shade<kNoDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
-template uint64_t rows_shade<kLess>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
-template uint64_t rows_shade<kLequal>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
-template uint64_t rows_shade<kAnyDepth>(Framebuffer&, const BoxEdges&, const BoxPlanes&, const Bands&, GLenum);
-template uint64_t span_shade<kNoDepth>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
-template uint64_t span_shade<kLess>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
-template uint64_t span_shade<kLequal>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
-template uint64_t span_shade<kAnyDepth>(Framebuffer&, const BoxPlanes&, int, int, int, GLenum);
-template uint64_t box_shade<kNoDepth>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);
-template uint64_t box_shade<kLess>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);
-template uint64_t box_shade<kLequal>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);
-template uint64_t box_shade<kAnyDepth>(Framebuffer&, const BoxPlanes&, int, int, GLenum, const BoxCoverage&);
+template uint64_t rows_shade<kNoDepth>(Framebuffer&, const KernelEdges&, const KernelPlanes&, const Bands&, GLenum);
+template uint64_t rows_shade<kLess>(Framebuffer&, const KernelEdges&, const KernelPlanes&, const Bands&, GLenum);
+template uint64_t rows_shade<kLequal>(Framebuffer&, const KernelEdges&, const KernelPlanes&, const Bands&, GLenum);
+template uint64_t rows_shade<kAnyDepth>(Framebuffer&, const KernelEdges&, const KernelPlanes&, const Bands&, GLenum);
+template uint64_t span_shade<kNoDepth>(Framebuffer&, const KernelPlanes&, int, int, int, GLenum);
+template uint64_t span_shade<kLess>(Framebuffer&, const KernelPlanes&, int, int, int, GLenum);
+template uint64_t span_shade<kLequal>(Framebuffer&, const KernelPlanes&, int, int, int, GLenum);
+template uint64_t span_shade<kAnyDepth>(Framebuffer&, const KernelPlanes&, int, int, int, GLenum);
+template uint64_t box_shade<kNoDepth>(Framebuffer&, const KernelPlanes&, int, int, GLenum, const BoxCoverage&);
+template uint64_t box_shade<kLess>(Framebuffer&, const KernelPlanes&, int, int, GLenum, const BoxCoverage&);
+template uint64_t box_shade<kLequal>(Framebuffer&, const KernelPlanes&, int, int, GLenum, const BoxCoverage&);
+template uint64_t box_shade<kAnyDepth>(Framebuffer&, const KernelPlanes&, int, int, GLenum, const BoxCoverage&);
 
 }  // namespace ffc::raster::detail
 
 #pragma GCC pop_options
+
+#endif  // FFCOMPAT_X86

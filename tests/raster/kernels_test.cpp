@@ -1,8 +1,8 @@
-// The box kernel (raster/box.h: boxes of at most 8x8 pixel centres, 16 pixels at a time), the span
-// kernel (long rows of large triangles) and the eight-triangle setup of triangle lists draw what
-// the scalar row loop draws, bit for bit: many
-// small triangles of random size, place, depth, 1/w and colour, under every depth function, with
-// 1 to 3 threads (rows in bands of 64), cut by the framebuffer's edges.
+// The AVX-512 kernels (raster/avx512/: the box kernel for boxes of at most 8x8 pixel centres,
+// the span kernel for long rows of large triangles, the rows kernel) and the eight-triangle setup
+// of triangle lists draw what the row loop draws, bit for bit: many small triangles of random
+// size, place, depth, 1/w and colour, under every depth function, with 1 to 3 threads (rows in
+// bands of 64), cut by the framebuffer's edges.
 #include <gtest/gtest.h>
 
 #include "triangles.h"
@@ -15,7 +15,7 @@ using namespace raster_test;
 class BoxKernel : public ::testing::TestWithParam<GLenum> {
  protected:
   void SetUp() override {
-    if (!raster::detail::wide_kernels()) GTEST_SKIP() << "this CPU has no AVX-512VL: the kernel does not run";
+    if (!raster::detail::wide_kernels()) GTEST_SKIP() << "no kernels: no AVX-512VL, or built without x86 intrinsics";
   }
 };
 
@@ -37,7 +37,7 @@ TEST_P(BoxKernel, DrawsWhatTheScalarRowLoopDraws) {
 
 // Triangles across the bands' edges: each thread draws its own rows of them, no more, no fewer.
 TEST(BoxKernelBands, TrianglesAcrossBandEdgesDrawEachRowOnce) {
-  if (!raster::detail::wide_kernels()) GTEST_SKIP() << "this CPU has no AVX-512VL: the kernel does not run";
+  if (!raster::detail::wide_kernels()) GTEST_SKIP() << "no kernels: no AVX-512VL, or built without x86 intrinsics";
   for (float size : {2.0f, 3.0f, 6.0f}) {
     const Triangles t = random_triangles(4000, size, 11 + unsigned(size), true);
     for (GLenum func : {GL_LESS, GL_ALWAYS}) {

@@ -1,0 +1,93 @@
+// The triangle lists' parts shared by the portable draw loop (triangle_list.cpp) and the AVX-512
+// one (avx512/triangle_list_avx512.cpp): a draw's list of triangles, the marks of its binned
+// entries, and the setup and drawing of one triangle. Not an interface.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "raster/row_loop.h"
+#include "raster/setup.h"
+#include "raster/triangle_list.h"
+
+namespace ffc::raster::detail {
+
+struct List {
+  Framebuffer& fb;
+  const State& s;
+  const ShadedVertices& vs;
+  const uint32_t* idx;
+  size_t count;
+  size_t base;  // unindexed: triangle t is vertices 3 (base + t) ..
+  std::array<size_t, 3> corners(size_t tri) const {
+    if (!idx) return {3 * (base + tri), 3 * (base + tri) + 1, 3 * (base + tri) + 2};
+    return {idx[3 * tri], idx[3 * tri + 1], idx[3 * tri + 2]};
+  }
+};
+
+constexpr uint32_t kClipped = 1u << 31;  // a binned triangle that needs clipping
+constexpr int kMaxThreads = Workers::kMax;
+constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
+
+// A triangle with a vertex outside the view volume: clipped, fanned and set up as the general
+// path does, then drawn in this thread's bands.
+void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const Bands& bands);
+
+#if FFCOMPAT_X86
+// setup_planes for a smooth triangle without secondary colour, two values per SSE2 register: the
+// same operations in the same order as detail::PlaneSolver, so the same bits, in fewer steps.
+bool smooth_planes(Triangle& t, const ShadedVertex* const (&v)[3], float fbh, bool swapped);
+#endif
+
+// Sets up and draws, in this thread's bands, a triangle whose vertices are all mapped.
+template <detail::DepthMode D>
+void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)[3], const detail::Bands& mine) {
+  const State& s = l.s;
+  Triangle t;
+  for (int i = 0; i < 3; ++i) t.x[i] = p[i].x, t.y[i] = p[i].y;
+  bool back = false;
+  if (s.cull || s.two_side) {
+    back = back_facing_triangle(glm::dvec4(l.vs.clip[vi[0]]), glm::dvec4(l.vs.clip[vi[1]]), glm::dvec4(l.vs.clip[vi[2]]), s);
+    if (culled(back, s)) return;
+  }
+  bool swapped = false;
+  if (!detail::setup_edges(t, l.fb.width, l.fb.height, &swapped)) return;
+  size_t order[3] = {vi[0], vi[1], vi[2]};
+  if (swapped) std::swap(order[1], order[2]);
+  auto planes = [&] {
+    const bool use_back = back && s.two_side;
+    const ShadedVertex* const v[3] = {&l.vs.hot[order[0]], &l.vs.hot[order[1]], &l.vs.hot[order[2]]};
+#if FFCOMPAT_X86
+    if (!s.flat && !s.add_secondary && !use_back) return smooth_planes(t, v, float(s.fb_height), swapped);
+#endif
+    const float x[3] = {v[0]->x, v[1]->x, v[2]->x}, yd[3] = {v[0]->y, v[1]->y, v[2]->y}, z[3] = {v[0]->z, v[1]->z, v[2]->z};
+    detail::depth_plane(x, yd, z, swapped, t.z);
+    glm::dvec3 pos[3];
+    double inv_w[3];
+    const glm::vec4* c[3];
+    const glm::vec4* sc[3];
+    for (int i = 0; i < 3; ++i) {
+      pos[i] = {v[i]->x, float(s.fb_height) - v[i]->y, v[i]->z};
+      inv_w[i] = 1 / double(v[i]->w);
+      const size_t from = s.flat ? vi[2] : order[i];  // flat: the provoking vertex's colours
+      c[i] = use_back ? &l.vs.back[from] : &l.vs.hot[from].color;
+      sc[i] = !s.add_secondary ? c[i] : use_back ? &l.vs.back_sec[from] : &l.vs.front_sec[from];
+    }
+    return detail::setup_planes(t, pos, inv_w, c, sc, s.flat, s.add_secondary);
+  };
+  detail::rasterize<D>(l.fb, t, s.depth_func, mine, planes);
+}
+
+#if FFCOMPAT_X86
+// With AVX-512 (avx512/triangle_list_avx512.cpp), where wide_kernels():
+// binning as triangle_list.cpp's bin_range, sixteen triangles at a time from `first` while sixteen
+// remain; returns where it stopped. Each owner's list takes a compressed store of sixteen: the
+// lists have that much room beyond their last element.
+size_t bin16(const List& l, size_t first, size_t last, int units, uint32_t** out);
+// Drawing as triangle_list.cpp's draw_bins, eight triangles set up at once (setup8) for the box
+// kernel; those it cannot draw go through draw_one or draw_clipped.
+template <DepthMode D>
+void draw_bins_wide(const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares);
+#endif
+
+}  // namespace ffc::raster::detail
