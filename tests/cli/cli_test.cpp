@@ -125,6 +125,14 @@ TEST(Cli, ShadingTheCubeAddsAThreeFacesViewToTheSeedsOwn) {
   EXPECT_FALSE(nlohmann::json::parse(moved.out).contains("three_faces"));
 }
 
+TEST(Cli, StressEndsWithASummaryLine) {
+  const Result r = ffcompat("stress --case shininess_0 --no-mesa");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\nstress: 1 cases in "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": 1 ok, 0 mesa-deviation, 0 FAIL; 0 crashed, 0 NaN pixels, 0 NaN vertices;"), std::string::npos)
+      << r.out;
+}
+
 TEST(Cli, BadInputIsAnErrorNotACrash) {
   EXPECT_EQ(ffcompat("render --scene teapot --out " + tmp("x.png").string()).status, 1);
   EXPECT_EQ(ffcompat("render --scene cube --shade phong --out " + tmp("x.png").string()).status, 1);
