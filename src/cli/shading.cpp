@@ -52,12 +52,13 @@ void add_shading(CLI::App& app) {
         {scene::Shade::Flat, mesh::NormalSource::Average},
         {scene::Shade::Smooth, mesh::NormalSource::Average}};
     const scene::Description desc = opts->description();
-    std::vector<View> views = {{"", opts->is_file() ? "" : "seed's camera", desc}};
+    std::vector<View> views = {{"", "", desc}};
     const bool moved = (opts->cam_angle_option && opts->cam_angle_option->count()) ||
                        (opts->cam_height_option && opts->cam_height_option->count());
     if (!opts->is_file() && opts->scene == "cube" && !moved) {
       SceneOptions three = *opts;
       three.cam_angle = kThreeFacesAngle, three.cam_height = kThreeFacesHeight;
+      views.front().label = "seed's camera";  // named only beside a second view
       views.push_back({"three_faces_", "three faces\n(35 deg, 2.5 up)", three.description()});
     }
 
@@ -108,7 +109,7 @@ void add_shading(CLI::App& app) {
     // GL_SMOOTH and the heat map of their difference, with the heat map's legend underneath.
     image::Sheet sheet;
     sheet.title = "ffcompat shading: " + desc.name + " on " + backend->name();
-    sheet.columns = {"GL_FLAT", "GL_SMOOTH", "|flat - smooth|"};
+    sheet.columns = {"GL_FLAT", "GL_SMOOTH", "difference"};
     sheet.heat_legend = true;
     for (const View& v : views)
       for (const char* n : {"face", "average"}) {
