@@ -96,6 +96,10 @@ int main(int argc, char** argv) {
   ex.width = ex.height = 640;
   ex.draw = render;
   ex.on_key = key_callback;
+  ex.state = [] {
+    return std::string("GL_SMOOTH, face normals, ") + (gUseDrawArray ? "glDrawArrays" : "glBegin/glVertex") +
+           ", GL_RESCALE_NORMAL, camera " + gCam.describe();
+  };
   ex.add_options = [](CLI::App& app) {
     static std::string path = "arrays";
     app.add_option("--path", path, "How the cube is drawn: vertex (glBegin) or arrays (glDrawArrays)")

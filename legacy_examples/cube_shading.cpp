@@ -109,6 +109,11 @@ int main(int argc, char** argv) {
   ex.width = ex.height = 640;
   ex.draw = render;
   ex.on_key = key_callback;
+  ex.state = [] {
+    return std::string(gShadeSmooth ? "GL_SMOOTH" : "GL_FLAT") +
+           (gSmoothCube ? ", averaged normals (8 vertices, glDrawElements)" : ", face normals (36 vertices, glDrawArrays)") +
+           ", GL_RESCALE_NORMAL, camera " + gCam.describe();
+  };
   ex.add_options = [](CLI::App& app) {
     static std::string mode = "flat";
     app.add_option("--mode", mode, "flat: 36 vertices with face normals; smooth: 8 with averaged normals")

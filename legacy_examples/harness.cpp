@@ -1,6 +1,8 @@
 #include "harness.h"
 
 #include <cctype>
+#include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <map>
@@ -42,12 +44,30 @@ int key_from_name(const std::string& name) {
   return it == named.end() ? -1 : it->second;
 }
 
+Viewport letterbox(int fb_w, int fb_h, int pic_w, int pic_h) {
+  Viewport v;
+  if (fb_w <= 0 || fb_h <= 0 || pic_w <= 0 || pic_h <= 0) return v;
+  // Full width if the framebuffer is relatively taller than the picture, else full height.
+  if (int64_t(fb_w) * pic_h <= int64_t(fb_h) * pic_w)
+    v.width = fb_w, v.height = int(int64_t(fb_w) * pic_h / pic_w);
+  else
+    v.height = fb_h, v.width = int(int64_t(fb_h) * pic_w / pic_h);
+  v.x = (fb_w - v.width) / 2, v.y = (fb_h - v.height) / 2;
+  return v;
+}
+
+std::string window_title(const Example& ex, const std::string& backend) {
+  std::string t = ex.title;
+  if (ex.state) t += " | " + ex.state();
+  return t + " | backend " + backend;
+}
+
 namespace {
 
 struct Options {
   bool headless = false, json = false, check = false;
-  std::string out, keys, backend = "mesa";
-  int frames = 0;
+  std::string out, keys, backend = "mesa", screenshot;
+  int frames = 0, window_w = 0, window_h = 0;
 };
 
 // The example's frame through Mesa's feedback and ours, vertex by vertex (ffcompat check's
@@ -112,7 +132,8 @@ int run_window(const Example& ex, const Options& opt) {
     return 1;
   }
   // No profile hint: a compatibility context, where the fixed-function pipeline lives.
-  GLFWwindow* window = glfwCreateWindow(ex.width, ex.height, ex.title.c_str(), nullptr, nullptr);
+  GLFWwindow* window = glfwCreateWindow(opt.window_w > 0 ? opt.window_w : ex.width,
+                                        opt.window_h > 0 ? opt.window_h : ex.height, ex.title.c_str(), nullptr, nullptr);
   if (!window) {
     glfwTerminate();
     std::cerr << ex.name << ": could not create a GLFW window\n";
@@ -130,31 +151,60 @@ int run_window(const Example& ex, const Options& opt) {
   glfwSetWindowUserPointer(window, const_cast<Example*>(&ex));
   glfwSetKeyCallback(window, on_glfw_key);
   glfwSwapInterval(1);
+  // The window keeps the picture's aspect when the window manager honours the hint; the
+  // letterbox below keeps it when one does not (or under a bare X server).
+  glfwSetWindowAspectRatio(window, ex.width, ex.height);
+  const std::string backend_name = soft ? soft->name() : "mesa (the window's GL)";
+  std::string shown_title;
   try {
     for (int frame = 0; !glfwWindowShouldClose(window) && (opt.frames <= 0 || frame < opt.frames); ++frame) {
       glfwPollEvents();
-      int w = 0, h = 0;
-      glfwGetFramebufferSize(window, &w, &h);
+      if (const std::string t = window_title(ex, backend_name); t != shown_title) {
+        glfwSetWindowTitle(window, t.c_str());
+        shown_title = t;
+      }
+      int fb_w = 0, fb_h = 0;
+      glfwGetFramebufferSize(window, &fb_w, &fb_h);
+      const Viewport v = letterbox(fb_w, fb_h, ex.width, ex.height);
+      if (v.width <= 0 || v.height <= 0) {  // minimised
+        glfwSwapBuffers(window);
+        continue;
+      }
       if (soft) {
         // Our renderer draws the frame; the window's GL only shows the picture.
-        soft->begin(w, h);
-        ex.draw(w, h);
+        soft->begin(v.width, v.height);
+        ex.draw(v.width, v.height);
         image::Image img = soft->read();
-        for (int y = 0; y < h / 2; ++y)  // glDrawPixels wants the bottom row first
-          std::swap_ranges(img.at(0, y), img.at(0, y) + size_t(w) * 4, img.at(0, h - 1 - y));
+        for (int y = 0; y < v.height / 2; ++y)  // glDrawPixels wants the bottom row first
+          std::swap_ranges(img.at(0, y), img.at(0, y) + size_t(v.width) * 4, img.at(0, v.height - 1 - y));
         gl::load(glfw_loader);
-        glViewport(0, 0, w, h);
+        glViewport(0, 0, fb_w, fb_h);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glViewport(v.x, v.y, v.width, v.height);  // glRasterPos2f(-1, -1) lands on its corner
         glMatrixMode(GL_PROJECTION), glLoadIdentity();
         glMatrixMode(GL_MODELVIEW), glLoadIdentity();
         glDisable(GL_DEPTH_TEST), glDisable(GL_LIGHTING);
         glRasterPos2f(-1, -1);
-        glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+        glDrawPixels(v.width, v.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
       } else {
-        glViewport(0, 0, w, h);
-        ex.draw(w, h);
+        // The examples' glClear clears the whole window, bars included; they draw in the box.
+        glViewport(v.x, v.y, v.width, v.height);
+        ex.draw(v.width, v.height);
+      }
+      if (!opt.screenshot.empty() && frame + 1 == opt.frames) {
+        // What the window shows, read back from its own GL before the swap: bars included.
+        image::Image shot(fb_w, fb_h);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, fb_w, fb_h, GL_RGBA, GL_UNSIGNED_BYTE, shot.rgba.data());
+        for (int y = 0; y < fb_h / 2; ++y)  // bottom row first, as glReadPixels gives it
+          std::swap_ranges(shot.at(0, y), shot.at(0, y) + size_t(fb_w) * 4, shot.at(0, fb_h - 1 - y));
+        image::write_png(opt.screenshot, shot);
       }
       glfwSwapBuffers(window);
     }
+    // With --frames (the tests), the title last shown: what a person would have read.
+    if (opt.frames > 0) std::cout << "window title: " << shown_title << std::endl;
   } catch (...) {
     glfwTerminate();  // close the window before run_example reports the error
     throw;
@@ -186,6 +236,20 @@ int run_example(int argc, char** argv, const Example& ex) {
       ->check(CLI::NonNegativeNumber)
       ->excludes(headless)
       ->excludes(check);
+  app.add_option_function<std::string>(
+         "--window-size",
+         [&opt](const std::string& s) {
+           char x = 0;
+           if (std::sscanf(s.c_str(), "%d%c%d", &opt.window_w, &x, &opt.window_h) != 3 || x != 'x' ||
+               opt.window_w < 1 || opt.window_h < 1 || opt.window_w > 8192 || opt.window_h > 8192)
+             throw CLI::ValidationError("--window-size", "'" + s + "' is not WxH (1..8192)");
+         },
+         "Window size WxH at start (default: the picture's size); the picture keeps its aspect, centred")
+      ->excludes(headless)
+      ->excludes(check);
+  app.add_option("--screenshot", opt.screenshot, "Write the window's last frame (read back with glReadPixels) to a PNG")
+      ->excludes(headless)
+      ->excludes(check);
   if (ex.add_options) ex.add_options(app);
   try {
     app.parse(argc, argv);
@@ -211,6 +275,10 @@ int run_example(int argc, char** argv, const Example& ex) {
     if (opt.check) return check_vertices(ex, opt);
     if (opt.json && !opt.headless) {
       std::cerr << ex.name << ": --json goes with --headless or --check\n";
+      return 1;
+    }
+    if (!opt.screenshot.empty() && opt.frames <= 0) {
+      std::cerr << ex.name << ": --screenshot needs --frames N (the last frame is written)\n";
       return 1;
     }
     if (!opt.headless) return run_window(ex, opt);

@@ -27,14 +27,29 @@ int key_from_name(const std::string& name);
 
 struct Example {
   std::string name;   // "cube_lab": the "example" field of --json
-  std::string title;  // window title
+  std::string title;  // window title: the program and its keys
   int width = 640, height = 640;
   std::function<void(int w, int h)> draw;  // one frame, the viewport already set to w x h
   std::function<void(int key)> on_key;     // a GLFW key code, on press and repeat
+  // The state a person changes with the keys, in words (shade model, normals, drawing path,
+  // GL_NORMALIZE / GL_RESCALE_NORMAL): shown in the window title with the backend, so a
+  // screenshot says what it shows.
+  std::function<std::string()> state;
   // Registers the example's own options (--path, --depth, ...); they are parsed before any key
   // is replayed or any frame drawn.
   std::function<void(CLI::App& app)> add_options;
 };
+
+// The viewport that shows a picture of aspect pic_w:pic_h as large as it fits in a fb_w x fb_h
+// framebuffer, centred (black bars on the other sides): the examples keep their aspect when the
+// window is resized, as their projections (gluPerspective with aspect 1) assume.
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+Viewport letterbox(int fb_w, int fb_h, int pic_w, int pic_h);
+
+// "<title> | <state> | backend <name>": what the window shows in its title bar.
+std::string window_title(const Example& ex, const std::string& backend);
 
 // Parses the command line and runs the example; returns the process exit code (0, or 1 after
 // printing the error to stderr).

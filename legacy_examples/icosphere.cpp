@@ -143,6 +143,10 @@ int main(int argc, char** argv) {
   ex.width = ex.height = 512;
   ex.draw = display;
   ex.on_key = keyboard;
+  ex.state = [] {
+    return std::string(gSmooth ? "GL_SMOOTH" : "GL_FLAT") + (gNormals == kSphere ? ", sphere normals" : ", face normals") +
+           ", depth " + std::to_string(gDepth) + ", glBegin/glVertex, no GL_NORMALIZE or GL_RESCALE_NORMAL";
+  };
   ex.add_options = [](CLI::App& app) {
     app.add_option("--depth", gDepth, "Subdivision depth")->check(CLI::Range(0, 8))->capture_default_str();
     static std::string shade = "smooth", normals = "face";

@@ -1,6 +1,7 @@
 #include "lab_scene.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "gl/glu.h"
 
@@ -15,6 +16,12 @@ bool Camera::on_key(int key) {
     case 'W': height += -.1; return true;
     default: return false;
   }
+}
+
+std::string Camera::describe() const {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.0f deg, height %.1f", ang * 180 / M_PI, height);
+  return b;
 }
 
 void drawFrame() {

@@ -1,6 +1,8 @@
 // Seed 000's "[Practice] OpenGL Lighting" scene around the cube (camera, axes, light, material and
 // the interleaved cube array), shared by the cube examples so each file shows only its topic.
 #pragma once
+#include <string>
+
 #include "gl/dispatch.h"
 
 namespace lab {
@@ -10,6 +12,7 @@ namespace lab {
 struct Camera {
   double ang = 0, height = 1;
   bool on_key(int key);  // true if the key was one of the camera's
+  std::string describe() const;  // "0 deg, height 1.0", for window titles
 };
 
 void drawFrame();

@@ -59,6 +59,11 @@ int main(int argc, char** argv) {
   ex.width = ex.height = 640;
   ex.draw = render;
   ex.on_key = key_callback;
+  ex.state = [] {
+    static const char* const fix[] = {"neither GL_NORMALIZE nor GL_RESCALE_NORMAL", "GL_NORMALIZE", "GL_RESCALE_NORMAL"};
+    return std::string(fix[gMode]) + (gScale == 0 ? ", glScalef(.5,.5,.5)" : ", glScalef(1,.2,1)") +
+           ", GL_SMOOTH, face normals, glDrawArrays, camera " + gCam.describe();
+  };
   ex.add_options = [](CLI::App& app) {
     static std::string mode = kModes[gMode], scale = kScales[gScale];
     app.add_option("--mode", mode, "What fixes the normals' length: none, normalize or rescale")

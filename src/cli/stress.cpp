@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/common.h"
 #include "stress/stress.h"
@@ -59,6 +61,35 @@ void print_wrapped(const std::string& text, size_t indent, size_t width) {
     i = j + 1;
   }
   std::printf("\n");
+}
+
+// One line after the table: how many cases, how long, each verdict's count, and the worst of
+// what the table's columns measure, so a person need not read seventy rows to know the outcome.
+std::string summary(const std::vector<stress::Result>& results) {
+  size_t ok = 0, deviation = 0, fail = 0, crashed = 0;
+  uint64_t nan_pixels = 0, nan_vertices = 0;
+  double seconds = 0, worst = 0;
+  std::string worst_case;
+  for (const auto& r : results) {
+    if (r.verdict.rfind("FAIL", 0) == 0)
+      ++fail;
+    else if (r.verdict.rfind("mesa-deviation", 0) == 0)
+      ++deviation;
+    else
+      ++ok;
+    crashed += r.crashed;
+    nan_pixels += r.nan_pixels, nan_vertices += r.nan_vertices;
+    seconds += r.seconds;
+    if (r.max_abs_vs_double > worst) worst = r.max_abs_vs_double, worst_case = r.name;
+  }
+  char b[512];
+  std::snprintf(b, sizeof b,
+                "stress: %zu cases in %.1f s: %zu ok, %zu mesa-deviation, %zu FAIL; %zu crashed, %llu NaN pixels, "
+                "%llu NaN vertices; float vs double worst %.3g%s%s%s",
+                results.size(), seconds, ok, deviation, fail, crashed, (unsigned long long)nan_pixels,
+                (unsigned long long)nan_vertices, worst, worst_case.empty() ? "" : " (", worst_case.c_str(),
+                worst_case.empty() ? "" : ")");
+  return b;
 }
 
 }  // namespace
@@ -143,7 +174,10 @@ void add_stress(CLI::App& app) {
     }
     if (*json) {
       print_json(j);
-    } else if (*notes) {
+    } else {
+      std::printf("%s\n", summary(results).c_str());
+    }
+    if (!*json && *notes) {
       std::printf("\n");
       for (const auto& r : results) {
         std::printf("%s\n", r.name.c_str());

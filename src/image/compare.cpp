@@ -39,26 +39,28 @@ Diff compare(const Image& a, const Image& b) {
   return d;
 }
 
-Image heat_map(const Image& a, const Image& b, int saturate) {
+std::array<uint8_t, 3> heat_colour(double steps) {
+  if (steps <= 0) return {0, 0, 0};
+  // t in [0, 1]: 0 at 1 step (blue), 0.5 at 4 (red), 1 at 16 or more (yellow).
+  const double t = std::clamp(std::log2(steps) / 4, 0.0, 1.0);
+  if (t < 0.5) {
+    const double s = t / 0.5;
+    return {uint8_t(255 * s + 0.5), 0, uint8_t(255 * (1 - s) + 0.5)};
+  }
+  const double s = (t - 0.5) / 0.5;
+  return {255, uint8_t(255 * s + 0.5), 0};
+}
+
+Image heat_map(const Image& a, const Image& b) {
   check_sizes(a, b);
   Image out(a.width, a.height);
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
       int worst = 0;
       for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c])));
-      // t in (0,1]: blue (1 step) -> red (half) -> yellow (saturate).
-      const double t = worst == 0 ? 0 : std::min(1.0, double(worst) / saturate);
+      const std::array<uint8_t, 3> rgb = heat_colour(worst);
       uint8_t* o = out.at(x, y);
-      if (worst == 0) {
-        o[0] = o[1] = o[2] = 0;
-      } else if (t < 0.5) {
-        const double s = t / 0.5;
-        o[0] = uint8_t(255 * s), o[1] = 0, o[2] = uint8_t(255 * (1 - s) + 0.5);
-      } else {
-        const double s = (t - 0.5) / 0.5;
-        o[0] = 255, o[1] = uint8_t(255 * s + 0.5), o[2] = 0;
-      }
-      o[3] = 255;
+      o[0] = rgb[0], o[1] = rgb[1], o[2] = rgb[2], o[3] = 255;
     }
   return out;
 }

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -25,6 +26,18 @@ std::string reach_html(const Reach& x) {
   if (x.at_start) return "&le; " + s;
   if (x.extrapolated) return "<i>~" + s + " (extrapolated)</i>";
   return s;
+}
+
+// A path as the page shows it: relative to the folder ffcompat report ran in when it lies inside
+// it, else its last two components, so that the page names no folder of the machine that made it.
+std::string shown_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  if (!p.is_absolute()) return path;
+  std::error_code ec;
+  const fs::path rel = p.lexically_relative(fs::current_path(ec));
+  if (!ec && !rel.empty() && *rel.begin() != "..") return rel.string();
+  return p.has_parent_path() ? (p.parent_path().filename() / p.filename()).string() : p.filename().string();
 }
 
 const Row* find(const std::vector<Row>& rows, const std::string& scene, int depth, const std::string& shading,
@@ -98,11 +111,10 @@ std::string html_page(const Report& r) {
        "double and converted to 8 bits as the renderers convert. That is what finer tessellation converges to. "
        "<b>rmse</b> and <b>max</b> are the shading error in 8-bit steps over the RGB channels of the pixels both "
        "cover; the <b>silhouette</b> (pixels only one of them covers: the inscribed polygon is smaller than the "
-       "sphere) is counted apart. Rounding to 8 bits alone leaves an RMSE of about 0.29 steps against the exact "
-       "colours (";
+       "sphere) is counted apart. Rounding the ideal to 8 bits alone leaves an RMSE against its exact colours of ";
   for (size_t i = 0; i < r.sweep.floors.size(); ++i)
     s << (i ? ", " : "") << xml_escape(r.sweep.floors[i].first) << " " << f("%.3f", r.sweep.floors[i].second);
-  s << "); the CSV's <code>rmse_exact</code> measures against the exact colours and so never drops below it, while "
+  s << " (measured in this run); the CSV's <code>rmse_exact</code> measures against the exact colours and so never drops below it, while "
        "<code>rmse</code> (against the ideal's 8 bits) reaches 0 when every pixel rounds alike.</p>\n";
   s << "<ul><li><b>seed</b>: seed 004's lighting: directional light 0 at its default (0,0,1,0) in eye space, ambient .2, "
        "diffuse 1, no specular; material ambient and diffuse (.8,.6,.4).</li>"
@@ -146,9 +158,12 @@ std::string html_page(const Report& r) {
   // Pictures.
   s << "<h2 id=\"pictures\">Pictures (" << xml_escape(kb) << ")</h2>\n<p>Error maps: largest channel difference from the ideal, "
     << "<span class=\"swatch\" style=\"background:#000\"></span>equal "
-    << "<span class=\"swatch\" style=\"background:#2000df\"></span>1 step "
-    << "<span class=\"swatch\" style=\"background:#ff0000\"></span>4 steps "
-    << "<span class=\"swatch\" style=\"background:#ffff00\"></span>8 or more; silhouette: "
+    << "<span class=\"swatch\" style=\"background:#0000ff\"></span>1 step "
+    << "<span class=\"swatch\" style=\"background:#800080\"></span>2 "
+    << "<span class=\"swatch\" style=\"background:#ff0000\"></span>4 "
+    << "<span class=\"swatch\" style=\"background:#ff8000\"></span>8 "
+    << "<span class=\"swatch\" style=\"background:#ffff00\"></span>16 or more (the scale of every ffcompat heat map); "
+       "silhouette: "
     << "<span class=\"swatch\" style=\"background:#ff00ff\"></span>only the picture covers "
     << "<span class=\"swatch\" style=\"background:#00ffff\"></span>only the ideal covers. Cropped to the sphere; click a "
        "picture for its pixels.</p>\n";
@@ -244,18 +259,18 @@ std::string html_page(const Report& r) {
   } else {
     size_t pass = 0;
     for (const SceneCheck& c : r.checks) pass += c.pass();
-    s << "<p>Every shipped scene (" << (r.scenes_dir.empty() ? "none found" : "<code>" + xml_escape(r.scenes_dir) + "/*.toml</code>")
+    s << "<p>Every shipped scene (" << (r.scenes_dir.empty() ? "none found" : "<code>" + xml_escape(shown_path(r.scenes_dir)) + "/*.toml</code>")
       << ") and the built-in scenes: our float pipeline's lit vertex colours against Mesa's feedback "
          "(check::compare_vertices; passes at 1e-5, or with a known Mesa deviation recorded), and the soft picture "
          "against Mesa's (image::compare; passes at 1 step). <b>"
-      << pass << " of " << r.checks.size() << " pass.</b> The heat maps (black equal, blue 1 step, yellow 4 or more) "
+      << pass << " of " << r.checks.size() << " pass.</b> The heat maps use the scale of the pictures above (black equal, blue 1 step, red 4, yellow 16 or more) "
          "are full size: a few differing pixels do not show in a thumbnail.</p>\n";
     s << "<table><tr><th class=\"l\">scene</th><th class=\"l\">source</th><th>size</th><th>vertices</th>"
          "<th>vertex max |&Delta;| float</th><th>double</th><th>window pos px</th><th>pixel max diff</th>"
          "<th>differing</th><th class=\"l\">result</th><th>Mesa</th><th class=\"l\">soft &minus; Mesa</th></tr>\n";
     for (size_t i = 0; i < r.checks.size(); ++i) {
       const SceneCheck& c = r.checks[i];
-      s << "<tr><td class=\"l\">" << xml_escape(c.name) << "</td><td class=\"l\">" << xml_escape(c.source) << "</td>";
+      s << "<tr><td class=\"l\">" << xml_escape(c.name) << "</td><td class=\"l\">" << xml_escape(shown_path(c.source)) << "</td>";
       if (!c.error.empty()) {
         s << "<td colspan=\"7\" class=\"l fail\">" << xml_escape(c.error) << "</td><td class=\"l fail\">error</td><td></td><td></td></tr>\n";
         continue;

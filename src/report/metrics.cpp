@@ -65,9 +65,9 @@ double rounding_floor(const Ideal& ideal) {
   return count ? std::sqrt(sum / (3.0 * count)) : 0;
 }
 
-image::Image error_map(const image::Image& picture, const Ideal& ideal, int saturate) {
+image::Image error_map(const image::Image& picture, const Ideal& ideal) {
   check_size(picture, ideal);
-  image::Image out = image::heat_map(picture, ideal.image, saturate);
+  image::Image out = image::heat_map(picture, ideal.image);
   for (int y = 0; y < picture.height; ++y)
     for (int x = 0; x < picture.width; ++x) {
       const size_t i = size_t(y) * picture.width + x;

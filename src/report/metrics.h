@@ -25,9 +25,8 @@ ShadingError shading_error(const image::Image& picture, const Ideal& ideal);
 // colours (about sqrt(1/12) = 0.29 where nothing clamps).
 double rounding_floor(const Ideal& ideal);
 
-// image::heat_map of the picture against the ideal (black equal, blue 1 step, red half of
-// `saturate`, yellow `saturate` or more), with the silhouette pixels magenta (picture only) and
-// cyan (ideal only).
-image::Image error_map(const image::Image& picture, const Ideal& ideal, int saturate = 8);
+// image::heat_map of the picture against the ideal (the one scale: black equal, blue 1 step, red
+// 4, yellow 16 or more), with the silhouette pixels magenta (picture only) and cyan (ideal only).
+image::Image error_map(const image::Image& picture, const Ideal& ideal);
 
 }  // namespace ffc::report

@@ -146,7 +146,7 @@ Report run(const ReportOptions& o, const Progress& progress) {
       const SceneCheck& c = r.checks[i];
       if (!c.error.empty()) continue;
       image::write_png((out / regression_path(i, c.name, "mesa")).string(), c.mesa);
-      image::write_png((out / regression_path(i, c.name, "diff")).string(), image::heat_map(c.mesa, c.soft, 4));
+      image::write_png((out / regression_path(i, c.name, "diff")).string(), image::heat_map(c.mesa, c.soft));
     }
     r.regression_seconds = std::chrono::duration<double>(Clock::now() - tr).count();
   }

@@ -99,6 +99,41 @@ TEST(Cli, ShadingWritesFourPicturesASheetAndThreeComparisons) {
   EXPECT_GT(j["comparisons"][1]["max_diff"].get<int>(), 0);
 }
 
+TEST(Cli, ShadingTheCubeAddsAThreeFacesViewToTheSeedsOwn) {
+  const fs::path dir = tmp("shading_cube");
+  const Result r = ffcompat("shading --scene cube --size 96x96 --json --out " + dir.string());
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["comparisons"].size(), 3u);  // the seed's camera, as before
+  ASSERT_TRUE(j.contains("three_faces"));
+  const auto& t = j["three_faces"];
+  EXPECT_EQ(t["cam_angle"], 35.0);
+  EXPECT_EQ(t["cam_height"], 2.5);
+  for (const char* k : {"flat_face", "smooth_face", "flat_average", "smooth_average"})
+    EXPECT_TRUE(fs::exists(t["images"][k].get<std::string>())) << k;
+  ASSERT_EQ(t["comparisons"].size(), 3u);
+  // From there GL_FLAT paints each face's two triangles apart (the point light's direction
+  // differs per vertex), and averaged normals change the picture.
+  EXPECT_GT(t["comparisons"][0]["max_diff"].get<int>(), 0);
+  EXPECT_GT(t["comparisons"][2]["max_diff"].get<int>(), 0);
+  // The sheet: four rows of three 96-pixel cells, with labels and the legend around them.
+  const ffc::image::Image sheet = ffc::image::read_png(j["sheet"].get<std::string>());
+  EXPECT_GT(sheet.width, 3 * 96);
+  EXPECT_GT(sheet.height, 4 * 96);
+  // A camera of the user's own: one view only.
+  const Result moved = ffcompat("shading --scene cube --size 64x64 --cam-angle 20 --json --out " + tmp("moved").string());
+  ASSERT_EQ(moved.status, 0);
+  EXPECT_FALSE(nlohmann::json::parse(moved.out).contains("three_faces"));
+}
+
+TEST(Cli, StressEndsWithASummaryLine) {
+  const Result r = ffcompat("stress --case shininess_0 --no-mesa");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\nstress: 1 cases in "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": 1 ok, 0 mesa-deviation, 0 FAIL; 0 crashed, 0 NaN pixels, 0 NaN vertices;"), std::string::npos)
+      << r.out;
+}
+
 TEST(Cli, BadInputIsAnErrorNotACrash) {
   EXPECT_EQ(ffcompat("render --scene teapot --out " + tmp("x.png").string()).status, 1);
   EXPECT_EQ(ffcompat("render --scene cube --shade phong --out " + tmp("x.png").string()).status, 1);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -53,18 +54,25 @@ TEST(Compare, SizesMustMatch) {
   EXPECT_THROW(compare(solid(2, 2, 0, 0, 0), solid(2, 3, 0, 0, 0)), std::invalid_argument);
 }
 
-TEST(HeatMap, BlackWhereEqualBlueForOneStepYellowWhenSaturated) {
-  const Image a = solid(3, 1, 100, 100, 100);
+TEST(HeatMap, OneScaleBlackEqualPureBlueAtOneRedAtFourYellowFromSixteen) {
+  const Image a = solid(6, 1, 100, 100, 100);
   Image b = a;
   b.at(1, 0)[0] = 101;  // 1 step
-  b.at(2, 0)[2] = 200;  // 100 steps
-  const Image h = heat_map(a, b, 16);
-  EXPECT_EQ(h.at(0, 0)[0] + h.at(0, 0)[1] + h.at(0, 0)[2], 0);
-  EXPECT_GT(h.at(1, 0)[2], 200);  // blue
-  EXPECT_EQ(h.at(1, 0)[1], 0);
-  EXPECT_EQ(h.at(2, 0)[0], 255);  // yellow
-  EXPECT_EQ(h.at(2, 0)[1], 255);
-  EXPECT_EQ(h.at(2, 0)[2], 0);
+  b.at(2, 0)[1] = 102;  // 2 steps: halfway from blue to red on the log2 scale
+  b.at(3, 0)[2] = 96;   // 4 steps
+  b.at(4, 0)[0] = 116;  // 16 steps
+  b.at(5, 0)[2] = 200;  // 100 steps: as 16
+  const Image h = heat_map(a, b);
+  auto rgb = [&](int x) { return std::array<int, 3>{h.at(x, 0)[0], h.at(x, 0)[1], h.at(x, 0)[2]}; };
+  EXPECT_EQ(rgb(0), (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(rgb(1), (std::array<int, 3>{0, 0, 255}));  // blue, not purple
+  EXPECT_EQ(rgb(2), (std::array<int, 3>{128, 0, 128}));
+  EXPECT_EQ(rgb(3), (std::array<int, 3>{255, 0, 0}));
+  EXPECT_EQ(rgb(4), (std::array<int, 3>{255, 255, 0}));
+  EXPECT_EQ(rgb(5), (std::array<int, 3>{255, 255, 0}));
+  EXPECT_EQ(h.at(3, 0)[3], 255);
+  // 8 steps: halfway from red to yellow.
+  EXPECT_EQ(heat_colour(8), (std::array<uint8_t, 3>{255, 128, 0}));
 }
 
 TEST(Png, RoundTripsExactly) {

@@ -163,6 +163,14 @@ TEST(Report, QuickRunWritesTheFiles) {
   EXPECT_EQ(r.checks[0].name, "cube");
   EXPECT_TRUE(r.checks[0].pass());
   EXPECT_TRUE(r.checks[1].pass());
+  // The page names no folder of the machine that made it: neither where the scenes were read
+  // (found from the executable's path: absolute) nor where the report was written.
+  const std::string html = slurp(out / "index.html");
+  ASSERT_FALSE(r.scenes_dir.empty());
+  EXPECT_EQ(html.find(r.scenes_dir + "/"), std::string::npos) << r.scenes_dir;
+  EXPECT_EQ(html.find(out.string()), std::string::npos);
+  EXPECT_NE(html.find("scenes/*.toml"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"l\">scenes/cube.toml</td>"), std::string::npos);
   const std::string text = summary_text(r);
   EXPECT_NE(text.find("headline"), std::string::npos);
   EXPECT_NE(text.find("index.html"), std::string::npos);
