@@ -12,7 +12,7 @@ namespace ffc::state {
 // A negative stride alone is recorded by Mesa and then the pointer is set all the same (stride -1
 // read back); ours ignores the call, as GL 2.1 section 2.5 says.
 void Context::VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (stride < 0) return error(GL_INVALID_VALUE);
   if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) return error(GL_INVALID_ENUM);
   if (size < 2 || size > 4) return error(GL_INVALID_VALUE);
@@ -20,7 +20,7 @@ void Context::VertexPointer(GLint size, GLenum type, GLsizei stride, const void*
 }
 
 void Context::NormalPointer(GLenum type, GLsizei stride, const void* p) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (stride < 0) return error(GL_INVALID_VALUE);
   if (type != GL_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE)
     return error(GL_INVALID_ENUM);
@@ -28,7 +28,7 @@ void Context::NormalPointer(GLenum type, GLsizei stride, const void* p) {
 }
 
 void Context::ColorPointer(GLint size, GLenum type, GLsizei stride, const void* p) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (stride < 0) return error(GL_INVALID_VALUE);
   if (type_size(type) == 0) return error(GL_INVALID_ENUM);
   if (size != 3 && size != 4) return error(GL_INVALID_VALUE);
@@ -68,8 +68,10 @@ void Context::ArrayElement(GLint i) {
     vertex_array_.enabled = false;
     fetch_vertex(i, element_fixed());
     vertex_array_.enabled = vertex;
+    if (vertex) stray_vertex();
     return;
   }
+  if (vertex_array_.enabled) format_has_position_ = !spec_;
   fetch_vertex(i, element_fixed());
 }
 

@@ -6,12 +6,12 @@
 namespace ffc::state {
 
 void Context::ClearColor(float r, float g, float b, float a) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   clear_color_ = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
 }
 
 void Context::ClearDepth(double d) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   clear_depth_ = clamp01(d);
 }
 

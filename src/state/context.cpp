@@ -38,6 +38,17 @@ bool Context::outside_begin_end() {
   return !in_begin_;
 }
 
+// Queries (glGet*, glIsEnabled, glGetLight, glGetPointerv, glGetString) and client state (the array
+// pointers, glEnable/DisableClientState, glPixelStore), glMatrixMode, glPushMatrix and the clear
+// values raise the same error inside glBegin/glEnd but flush nothing: Mesa keeps its stored
+// vertices and vertex format through them (measured one call at a time: only glGetMaterial among
+// the queries flushes). The current colour and normal are copied out first (FLUSH_CURRENT), see
+// get_values.
+bool Context::outside_begin_end_keeping_vertices() {
+  if (in_begin_) error(GL_INVALID_OPERATION);
+  return !in_begin_;
+}
+
 raster::Workers& Context::workers() {
   if (!workers_) workers_ = std::make_unique<raster::Workers>(threads_);
   return *workers_;
@@ -49,7 +60,7 @@ void Context::Finish() { outside_begin_end(); }
 void Context::Flush() { outside_begin_end(); }
 
 const GLubyte* Context::GetString(GLenum name) {
-  if (!outside_begin_end()) return nullptr;
+  if (!outside_begin_end_keeping_vertices()) return nullptr;
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>("ffcompat");
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>("ffcompat soft (fixed-function)");

@@ -183,7 +183,8 @@ class Context {
   void error(GLenum e) {
     if (error_ == GL_NO_ERROR) error_ = e;
   }
-  bool outside_begin_end();  // records INVALID_OPERATION inside glBegin/glEnd
+  bool outside_begin_end();
+  bool outside_begin_end_keeping_vertices();  // records INVALID_OPERATION inside glBegin/glEnd, flushes nothing  // records INVALID_OPERATION inside glBegin/glEnd
   void set_enabled(GLenum cap, bool on);
   void set_client_state(GLenum array, bool on);
   bool* capability(GLenum cap);
@@ -244,6 +245,8 @@ class Context {
   void copy_pending();
   void flush_current();
   void flush_stored();
+  void flush_stored_keeping_format();
+  void stray_vertex();
   void begin_draw();
   void feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const;
   void feedback_primitive(GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped,
@@ -313,6 +316,7 @@ class Context {
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
+  bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
   // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
   struct CurrentValues {

@@ -102,14 +102,14 @@ int Context::enabled_state(GLenum cap) {
 }
 
 GLboolean Context::IsEnabled(GLenum cap) {
-  if (!outside_begin_end()) return GL_FALSE;
+  if (!outside_begin_end_keeping_vertices()) return GL_FALSE;
   const int on = enabled_state(cap);
   if (on < 0) return error(GL_INVALID_ENUM), GL_FALSE;
   return GLboolean(on);
 }
 
 void Context::set_client_state(GLenum array, bool on) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   ClientArray* a = array == GL_VERTEX_ARRAY   ? &vertex_array_
                    : array == GL_NORMAL_ARRAY ? &normal_array_
                    : array == GL_COLOR_ARRAY  ? &color_array_

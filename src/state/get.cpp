@@ -35,7 +35,7 @@ GLint float_to_int(double x) {
 // from the value as Mesa stores it: a float, or a double for the depth clear value.
 int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
   normalized = kRound;
-  if (!outside_begin_end()) return 0;
+  if (!outside_begin_end_keeping_vertices()) return 0;
   int n = 0;
   auto vec4 = [&](const glm::dvec4& c, bool color) {
     for (int k = 0; k < 4; ++k) out[k] = c[k];
@@ -45,11 +45,7 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
     n = 16, normalized = kFromFloat;
   };
-  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL) {  // as glGetMaterialfv, but the colour
-    const int size = color_size_, active = color_active_;           // attribute keeps its sizes (measured)
-    flush_stored();
-    color_size_ = size, color_active_ = active;
-  }
+  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL) flush_current();  // FLUSH_CURRENT
   switch (pname) {
     // The float context reports its float matrices, as Mesa does: the ones it draws with.
     case GL_MODELVIEW_MATRIX: mat(modelview()); break;
@@ -167,7 +163,7 @@ void Context::GetBooleanv(GLenum pname, GLboolean* out) {
 }
 
 void Context::GetPointerv(GLenum pname, void** out) {
-  if (!outside_begin_end()) return;  // the pointer left as it was, as Mesa leaves it
+  if (!outside_begin_end_keeping_vertices()) return;  // the pointer left as it was, as Mesa leaves it
   switch (pname) {
     case GL_VERTEX_ARRAY_POINTER: *out = const_cast<void*>(vertex_array_.pointer); return;
     case GL_NORMAL_ARRAY_POINTER: *out = const_cast<void*>(normal_array_.pointer); return;

@@ -31,15 +31,37 @@ void Context::Color(double r, double g, double b, double a, int components) {
   update_color_material();
 }
 void Context::Vertex(double x, double y, double z, double w) {
-  if (!in_begin_) return;  // outside glBegin/glEnd a vertex has no effect (undefined in GL)
+  if (!in_begin_) return stray_vertex();  // outside glBegin/glEnd a vertex draws nothing (undefined in GL)
+  format_has_position_ = !spec_;
   process_vertex({x, y, z, w});
+}
+
+// glBegin and glEnd: Mesa's vbo resets its vertex format at glBegin only while the format holds no
+// position ("attributes occurring outside begin/end pairs", vbo_exec_Begin), and never at glEnd, so
+// once a glVertex has been sent the colour's size and active size carry over to the next primitive
+// until a call that flushes the stored vertices. Soft still takes the pending values here (it
+// draws at glEnd; Mesa's draw reads them from the stored vertices).
+void Context::flush_stored_keeping_format() {
+  if (!format_has_position_) return flush_stored();
+  const int size = color_size_, active = color_active_;
+  flush_stored();
+  color_size_ = size, color_active_ = active, format_has_position_ = true;
+}
+
+// A glVertex outside glBegin/glEnd draws nothing, but Mesa's vbo stores it: the position joins the
+// vertex format and the next state change flushes (measured: glColor4f(a=0); glVertex; glColor3f;
+// glColor4f(a=0); glBegin; glColor3f; glEnd leaves alpha 0 in Mesa, 1 without the glVertex).
+void Context::stray_vertex() {
+  if (spec_) return;
+  format_has_position_ = true;
+  vertices_kept_ = true;
 }
 
 void Context::Begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
   validate_matrices();  // Mesa validates its state before it checks the mode
   if (!valid_primitive(mode)) return error(primitive_error(mode));
-  flush_stored();
+  flush_stored_keeping_format();
   set_color_varies(false);
   vertices_kept_ = !spec_;
   in_begin_ = true;
@@ -71,11 +93,11 @@ void Context::End() {
   in_begin_ = false;
   if (!immediate_list_) {
     flush_primitive();
-    return flush_stored();
+    return flush_stored_keeping_format();
   }
   immediate_list_ = false;
   immediate_to_list();
   draw_triangle_list(nullptr, list_pos_.size() / 3);
-  flush_stored();
+  flush_stored_keeping_format();
 }
 }  // namespace ffc::state

@@ -244,9 +244,10 @@ void Context::flush_stored() {
   copy_pending();
   pending_materials_.clear();
   color_size_ = color_active_ = 0;  // the vbo's vertex format is reset
+  format_has_position_ = false;
 }
 void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   const int i = light_index(light), n = light_param_count(pname);
   if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
   const lighting::LightParams& l = lights_[i];

@@ -28,7 +28,7 @@ std::vector<fmat::Matrix>& Context::stack_f() {
 }
 
 void Context::MatrixMode(GLenum mode) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   // GL_TEXTURE has its stack (nothing here reads it: there is no texturing).
   if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) return error(GL_INVALID_ENUM);
   matrix_mode_ = mode;
@@ -60,7 +60,7 @@ void Context::validate_matrices() {
 }
 
 void Context::PushMatrix() {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   auto& s = stack();
   if (s.size() >= (matrix_mode_ == GL_TEXTURE ? kMaxTextureStackDepth : kMaxStackDepth))
     return error(GL_STACK_OVERFLOW);

@@ -298,7 +298,7 @@ void pack_pixels(const raster::Framebuffer& fb, int x, int y, int w, int h, GLen
 // ---------------------------------------------------------------- the entry points
 
 void Context::PixelStorei(GLenum pname, GLint param) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   switch (pname) {
     case GL_PACK_ALIGNMENT: case GL_UNPACK_ALIGNMENT:
       if (param != 1 && param != 2 && param != 4 && param != 8) return error(GL_INVALID_VALUE);
