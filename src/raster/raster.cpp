@@ -1,7 +1,7 @@
 #include "raster/raster.h"
 #include "raster/reference.h"
 #include "raster/row_loop.h"
-#include "raster/workers.h"
+#include "pool/workers.h"
 
 #include <algorithm>
 #include <atomic>
@@ -401,7 +401,7 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
 }
 
 void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
-                    Workers& workers) {
+                    pool::Workers& workers) {
   if (reference_rasterizer() && !s.fragment_ops()) {
     for (size_t i = 0; i < count; ++i)
       for (const Triangle& t : *lists[i]) draw_reference(fb, t, s);
@@ -643,7 +643,7 @@ void clear_band(Framebuffer& fb, const ClearRequest& c, int b) {
   if (c.depth) std::fill_n(&fb.depth[first], n, uint32_t(std::clamp(c.clear_depth, 0.0, 1.0) * 0xFFFFFF + 0.5));
 }
 
-void clear(Framebuffer& fb, const ClearRequest& c, Workers& workers) {
+void clear(Framebuffer& fb, const ClearRequest& c, pool::Workers& workers) {
   workers.run([&](int b) { clear_band(fb, c, b); }, (fb.height + kBandRows - 1) / kBandRows);  // a band a share
 }
 

@@ -10,6 +10,10 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+namespace ffc::pool {
+class Workers;  // pool/workers.h: the threads a draw is shared out on
+}  // namespace ffc::pool
+
 namespace ffc::raster {
 
 // A vertex after the vertex stage: clip-space position and its lit colours.
@@ -179,9 +183,8 @@ bool setup(const std::array<SetupVertex, 3>& v, const State& s, Triangle& out);
 
 // Rasterizes in order, rows shared out between the workers in interleaved bands: every pixel is
 // written by one thread, in primitive order, so the picture does not depend on their number.
-class Workers;
 void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
-                    Workers& workers);  // the `count` lists one after the other
+                    pool::Workers& workers);  // the `count` lists one after the other
 
 // A line of width s.line_width and a point of size s.point_size as llvmpipe rasterizes them
 // (lp_setup_line.c, lp_setup_point.c). Colours: the line's interpolated, the point's its own.
@@ -195,7 +198,7 @@ struct ClearRequest {
   double clear_depth = 1;
   bool pending() const { return color || depth; }
 };
-void clear(Framebuffer& fb, const ClearRequest& c, Workers& workers);
+void clear(Framebuffer& fb, const ClearRequest& c, pool::Workers& workers);
 void clear_band(Framebuffer& fb, const ClearRequest& c, int band);  // rows [64 band, 64 band + 64)
 
 // Fragments written from a non-finite colour (a NaN or an infinity in any channel before the

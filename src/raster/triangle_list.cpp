@@ -240,7 +240,7 @@ void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* 
   }
 }
 
-void draw_part(const List& l, Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
+void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
   const State& s = l.s;
   const size_t triangles = l.count;
   // Units of work, one a thread, taken by the threads as they come: contiguous shares of the
@@ -286,7 +286,7 @@ void draw_part(const List& l, Workers& workers, TriangleBins& bins, const ClearR
 }  // namespace
 
 void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
-                        size_t triangles, Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
+                        size_t triangles, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
   if (triangles == 0 && clear.pending()) raster::clear(fb, clear, workers);
   constexpr size_t kPart = size_t(1) << 30;  // binned triangle numbers have 31 bits
   for (size_t done = 0; done < triangles; done += kPart)

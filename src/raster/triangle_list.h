@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "raster/raster.h"
-#include "raster/workers.h"
+#include "pool/workers.h"
 
 namespace ffc::raster {
 
@@ -59,6 +59,6 @@ struct TriangleBins {
 // for feedback, and s.float_window must be set. `clear`, when pending, is done first: each
 // thread clears the bands it draws, just before it draws them.
 void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
-                        size_t triangles, Workers& workers, TriangleBins& bins, const ClearRequest& clear = {});
+                        size_t triangles, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear = {});
 
 }  // namespace ffc::raster

@@ -26,7 +26,7 @@ struct List {
 };
 
 constexpr uint32_t kClipped = 1u << 31;  // a binned triangle that needs clipping
-constexpr int kMaxThreads = Workers::kMax;
+constexpr int kMaxThreads = pool::Workers::kMax;
 constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
 
 // A triangle with a vertex outside the view volume: clipped, fanned and set up as the general

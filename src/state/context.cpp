@@ -49,8 +49,8 @@ bool Context::outside_begin_end_keeping_vertices() {
   return !in_begin_;
 }
 
-raster::Workers& Context::workers() {
-  if (!workers_) workers_ = std::make_unique<raster::Workers>(threads_);
+pool::Workers& Context::workers() {
+  if (!workers_) workers_ = std::make_unique<pool::Workers>(threads_);
   return *workers_;
 }
 

@@ -238,7 +238,7 @@ class Context {
   void immediate_to_list();                       // immediate mode's vertices kept for the list
   void draw_triangle_list(const uint32_t* indices, size_t triangles);
   raster::State raster_state() const;
-  raster::Workers& workers();
+  pool::Workers& workers();
   void prepare_lighting();
   // Colour material as Mesa tracks it (light.cpp).
   void update_color_material();
@@ -355,7 +355,7 @@ class Context {
   std::vector<unsigned> outside_;             // per vertex: the view-volume planes it is outside
   std::vector<raster::WindowVertex> window_;  // per vertex inside: its window position
   int threads_ = 2;
-  std::unique_ptr<raster::Workers> workers_;  // started on the first draw that uses them
+  std::unique_ptr<pool::Workers> workers_;  // started on the first draw that uses them
   // The triangle-list path: GL_TRIANGLES while rendering in float, lit in batches into compact
   // records the rasterizer reads in place (raster/triangle_list.h); raster calls the records
   // ShadedVertices. The path has this one name in state/.

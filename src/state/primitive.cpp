@@ -239,7 +239,7 @@ void Assembly::assemble(size_t n) {
 // per thread; the rasterizer takes the ranges in order, so the picture is the same as from one
 // thread.
 void Assembly::triangles_on_threads(size_t n) {
-  raster::Workers& w = c_.workers();
+  pool::Workers& w = c_.workers();
   const size_t count = n / 3, parts = size_t(w.size());
   c_.tri_parts_.resize(parts - 1);
   w.run([&](int share) {
@@ -250,7 +250,7 @@ void Assembly::triangles_on_threads(size_t n) {
     for (size_t t = count * p / parts; t < count * (p + 1) / parts; ++t)
       triangle(3 * t, 3 * t + 1, 3 * t + 2, 3 * t + 2, out, p == 0 ? scratch_ : local);
   });
-  const std::vector<raster::Triangle>* lists[raster::Workers::kMax] = {&c_.triangles_};
+  const std::vector<raster::Triangle>* lists[pool::Workers::kMax] = {&c_.triangles_};
   for (size_t p = 1; p < parts; ++p) lists[p] = &c_.tri_parts_[p - 1];
   c_.flush_clear();
   raster::draw_triangles(c_.fb_, lists, parts, rs_, w);

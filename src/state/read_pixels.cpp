@@ -338,7 +338,7 @@ void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, 
 void Context::read_top_down(uint8_t* out) {
   flush_clear();
   const size_t row = size_t(fb_.width) * 4;
-  raster::Workers& w = workers();
+  pool::Workers& w = workers();
   const int shares = 4 * w.size();
   w.run([&](int share) {
     for (int y = fb_.height * share / shares; y < fb_.height * (share + 1) / shares; ++y)  // GL's row 0 is the bottom one

@@ -235,7 +235,7 @@ void Context::run_stage(GLint first, GLint count, const Batches& batches) {
   if (count < kParallelStage || threads_ == 1) {
     batches(first, first + count, &zero[0]);
   } else {
-    raster::Workers& w = workers();
+    pool::Workers& w = workers();
     const int shares = std::min(4 * w.size(), 8);
     w.run([&](int s) {
       batches(first + GLint(int64_t(count) * s / shares), first + GLint(int64_t(count) * (s + 1) / shares), &zero[s]);

@@ -13,7 +13,7 @@
 #include "mesh/icosphere.h"
 #include "mesh/mesh.h"
 #include "raster/raster.h"
-#include "raster/workers.h"
+#include "pool/workers.h"
 #include "stress/stress.h"
 
 namespace ffc {
@@ -247,7 +247,7 @@ TEST(Harness, TheRasterCountsFragmentsFromNonFiniteColours) {
   t.c0[1] = std::numeric_limits<float>::quiet_NaN();
   raster::reset_nonfinite_fragments();
   const std::vector<raster::Triangle> one = {t};
-  raster::Workers workers(1);
+  pool::Workers workers(1);
   const std::vector<raster::Triangle>* list = &one;
   raster::draw_triangles(fb, &list, 1, s, workers);
   EXPECT_GT(raster::nonfinite_fragments(), 20u);

@@ -1,4 +1,4 @@
-#include "raster/workers.h"
+#include "pool/workers.h"
 
 #include <algorithm>
 
@@ -7,7 +7,7 @@
 #include <emmintrin.h>
 #endif
 
-namespace ffc::raster {
+namespace ffc::pool {
 
 namespace {
 // A hint to the CPU inside a spin loop (x86 pause, Arm yield): the other hyperthread runs, and
@@ -82,4 +82,4 @@ void Workers::loop() {
   }
 }
 
-}  // namespace ffc::raster
+}  // namespace ffc::pool

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-namespace ffc::raster {
+namespace ffc::pool {
 
 class Workers {
  public:
@@ -48,4 +48,4 @@ class Workers {
   void (*call_)(void*, int) = nullptr;
 };
 
-}  // namespace ffc::raster
+}  // namespace ffc::pool
