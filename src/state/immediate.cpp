@@ -48,13 +48,13 @@ void Context::flush_stored_keeping_format() {
   color_size_ = size, color_active_ = active, format_has_position_ = true;
 }
 
-// A glVertex outside glBegin/glEnd draws nothing, but Mesa's vbo stores it: the position joins the
-// vertex format and the next state change flushes (measured: glColor4f(a=0); glVertex; glColor3f;
-// glColor4f(a=0); glBegin; glColor3f; glEnd leaves alpha 0 in Mesa, 1 without the glVertex).
+// A glVertex outside glBegin/glEnd draws nothing, but the position joins Mesa's vbo vertex format
+// (measured: glColor4f(a=0); glVertex; glColor3f; glColor4f(a=0); glBegin; glColor3f; glEnd leaves
+// alpha 0 in Mesa, 1 without the glVertex). It asks for no flush of stored vertices: the format
+// stays through glEnable, glGetMaterial and glFinish (measured) until a glBegin/glEnd's vertices
+// are flushed.
 void Context::stray_vertex() {
-  if (spec_) return;
-  format_has_position_ = true;
-  vertices_kept_ = true;
+  if (!spec_) format_has_position_ = true;
 }
 
 void Context::Begin(GLenum mode) {
