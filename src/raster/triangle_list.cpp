@@ -14,7 +14,7 @@ namespace ffc::raster {
 namespace {
 
 // One vertex: outside_planes, then map_float.
-void map_one(ShadedVertices& vs, size_t i, const State& s) {
+void map_one(ListVertices& vs, size_t i, const State& s) {
   const glm::vec4& clip = vs.clip[i];
   ShadedVertex& v = vs.hot[i];
   v.w = clip.w;
@@ -45,7 +45,7 @@ struct FmaCall {
 // Four vertices at once: map_one's operations, in the same order, a vertex a lane. False (nothing
 // written) when a snapped coordinate would leave the range cvtps2dq rounds in; map_one then.
 template <typename F>
-bool map_four(ShadedVertices& vs, size_t i, const State& s) {
+bool map_four(ListVertices& vs, size_t i, const State& s) {
   __m128 X = _mm_loadu_ps(&vs.clip[i].x), Y = _mm_loadu_ps(&vs.clip[i + 1].x), Z = _mm_loadu_ps(&vs.clip[i + 2].x),
          W = _mm_loadu_ps(&vs.clip[i + 3].x);
   _MM_TRANSPOSE4_PS(X, Y, Z, W);
@@ -91,7 +91,7 @@ bool map_four(ShadedVertices& vs, size_t i, const State& s) {
 
 }  // namespace
 
-void map_shaded(ShadedVertices& vs, size_t first, size_t count, const State& s) {
+void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s) {
   size_t i = first;
 #if FFCOMPAT_X86
   static const bool fma = __builtin_cpu_supports("fma");
@@ -285,7 +285,7 @@ void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const 
 
 }  // namespace
 
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
+void draw_triangle_list(Framebuffer& fb, const State& s, const ListVertices& vs, const uint32_t* idx,
                         size_t triangles, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
   if (triangles == 0 && clear.pending()) raster::clear(fb, clear, workers);
   constexpr size_t kPart = size_t(1) << 30;  // binned triangle numbers have 31 bits

@@ -31,7 +31,7 @@ constexpr int32_t kNotMapped = INT32_MIN;  // x of a vertex that needs clipping
 
 // The vertices of a draw, as arrays. back, front_sec and back_sec are filled only when the state
 // reads them (two-sided lighting, separate specular).
-struct ShadedVertices {
+struct ListVertices {
   std::vector<ShadedVertex> hot;
   std::vector<Snapped> snapped;
   std::vector<glm::vec4> clip;  // for clipping and facing
@@ -44,7 +44,7 @@ struct ShadedVertices {
 
 // Vertices [first, first + count): window and snapped positions from their clip coordinates
 // (vs.clip); the colours are the caller's.
-void map_shaded(ShadedVertices& vs, size_t first, size_t count, const State& s);
+void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s);
 
 // The binned triangles of a draw, kept between draws so that steady state allocates nothing.
 struct TriangleBins {
@@ -58,7 +58,7 @@ struct TriangleBins {
 // what was kept for it, in primitive order). Triangles that need clipping take clip_and_map. Not
 // for feedback, and s.float_window must be set. `clear`, when pending, is done first: each
 // thread clears the bands it draws, just before it draws them.
-void draw_triangle_list(Framebuffer& fb, const State& s, const ShadedVertices& vs, const uint32_t* idx,
+void draw_triangle_list(Framebuffer& fb, const State& s, const ListVertices& vs, const uint32_t* idx,
                         size_t triangles, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear = {});
 
 }  // namespace ffc::raster

@@ -15,7 +15,7 @@ namespace ffc::raster::detail {
 struct List {
   Framebuffer& fb;
   const State& s;
-  const ShadedVertices& vs;
+  const ListVertices& vs;
   const uint32_t* idx;
   size_t count;
   size_t base;  // unindexed: triangle t is vertices 3 (base + t) ..

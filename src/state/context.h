@@ -357,9 +357,8 @@ class Context {
   int threads_ = 2;
   std::unique_ptr<pool::Workers> workers_;  // started on the first draw that uses them
   // The triangle-list path: GL_TRIANGLES while rendering in float, lit in batches into compact
-  // records the rasterizer reads in place (raster/triangle_list.h); raster calls the records
-  // ShadedVertices. The path has this one name in state/.
-  raster::ShadedVertices list_vertices_;
+  // records the rasterizer reads in place (raster/triangle_list.h's ListVertices).
+  raster::ListVertices list_vertices_;
   bool triangle_lists_ = true;
   bool immediate_list_ = false;  // glBegin(GL_TRIANGLES) on the list: vertices kept as sent, lit at glEnd
   std::vector<glm::vec4> list_pos_;

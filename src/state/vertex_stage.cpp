@@ -6,9 +6,9 @@
 //     vertex() and process_vertex(), into raster::Vertex;
 //   - a large draw on the general path: arrays_to_vertices(), into verts_, on the threads;
 //   - the triangle-list path: arrays_to_list() and immediate_to_list() (immediate mode's
-//     vertices kept for the list), into raster::ShadedVertices, on the threads.
+//     vertices kept for the list), into raster::ListVertices, on the threads.
 // The clip codes are taken where the vertices are consumed: primitive.cpp's Assembly and
-// raster::map_shaded.
+// raster::map_list_vertices.
 #include "state/vertex_stage.h"
 
 #include <algorithm>
@@ -271,7 +271,7 @@ template <class Fetch>
 void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
   update_vertex_constants();
   const raster::State rs = raster_state();
-  raster::ShadedVertices& out = list_vertices_;
+  raster::ListVertices& out = list_vertices_;
   out.resize(size_t(count), rs.two_side, rs.add_secondary);
   run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) {
     const VertexStage<float> stage(*this);
@@ -292,7 +292,7 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
         if (!out.front_sec.empty()) out.front_sec[o] = l.secondary[0];
         if (!out.back_sec.empty()) out.back_sec[o] = l.secondary[1];
       }
-      raster::map_shaded(out, at, size_t(m), rs);
+      raster::map_list_vertices(out, at, size_t(m), rs);
     }
   });
 }

@@ -51,7 +51,7 @@ void transpose8(__m256 (&r)[8]) {
 }
 
 // corner[c][lane]: the triangle's vertices, all mapped (lanes past the chunk repeat one).
-void setup8(const ShadedVertices& vs, const uint32_t (&corner)[3][8], int fb_w, int fb_h, Setup8& out) {
+void setup8(const ListVertices& vs, const uint32_t (&corner)[3][8], int fb_w, int fb_h, Setup8& out) {
   // Snapped positions: box, extents, area.
   __m256i sx[3], sy[3];
   for (int c = 0; c < 3; ++c) {
