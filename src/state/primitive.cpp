@@ -204,10 +204,13 @@ void Assembly::assemble(size_t n) {
     // decomposition for the last vertex provoking: (q0, q1, q3), (q1, q2, q3); feedback gives a
     // polygon's fan with its first vertex last. GL 2.1 leaves the split open (section 2.6.1).
     // A draw with any vertex outside the view volume runs the draw module's pipeline (its clipper)
-    // for all of its primitives, and so takes that decomposition too, drawing smooth.
+    // for all of its primitives, and so takes that decomposition too, drawing smooth; so does
+    // every glDrawElements of quads (measured: a smooth quad from elements 0,1,2,3 is split as
+    // (q0, q1, q3), (q1, q2, q3), the same corners from glDrawArrays as the fan; quad strips and
+    // polygons from elements split as from arrays).
     case GL_QUADS:  // the 4th vertex provokes
       for (size_t i = 0; i + 3 < n; i += 4) {
-        if (feedback_ || rs_.flat || any_outside_) {
+        if (feedback_ || rs_.flat || any_outside_ || !c_.elements_.empty()) {
           emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
           emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
         } else {
