@@ -171,6 +171,10 @@ class Context {
   void PixelStorei(GLenum pname, GLint param);
   const GLubyte* GetString(GLenum name);
 
+  // Not GL: records `e` as a GL call would (the first error stays until glGetError). The C ABI
+  // (src/classic/gl) uses it for an entry point soft does not implement: GL_INVALID_OPERATION.
+  void record_error(GLenum e) { error(e); }
+
   // Not GL: what the checker and tests read.
   lighting::Key key() const;
   const lighting::LightParams& light(int i) const { return lights_[i]; }
