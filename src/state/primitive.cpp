@@ -85,24 +85,22 @@ void Assembly::map_inside() {
   const std::vector<raster::Vertex>& verts = c_.verts_;
   c_.outside_.resize(verts.size());
   c_.window_.resize(verts.size());
-  // Vertices past the last whole primitive are dropped before Mesa's draw module looks for
-  // vertices outside the view volume (u_trim_pipe_prim): they do not choose the quads' split.
-  // (Drawn from elements, every fetched vertex counts, as measured so far.)
-  size_t whole = verts.size();
-  if (c_.elements_.empty()) {
-    const GLenum m = c_.prim_mode_;
-    if (m == GL_TRIANGLES) whole -= whole % 3;
-    else if (m == GL_QUADS) whole -= whole % 4;
-    else if (m == GL_QUAD_STRIP) whole = whole < 4 ? 0 : whole - whole % 2;
-    else if (whole < 3) whole = 0;
-  }
   for (size_t i = 0; i < verts.size(); ++i)
     if ((c_.outside_[i] = raster::outside_planes(verts[i].clip)) == 0) {
       c_.window_[i] = raster::map_to_window(verts[i].clip, rs_);
       c_.window_[i].fog = verts[i].fog;
-    } else if (i < whole) {
-      any_outside_ = true;
     }
+  // Mesa's draw module looks for vertices outside the view volume among those its primitives use:
+  // vertices (or elements) past the last whole primitive are dropped first (u_trim_pipe_prim), and
+  // a vertex in the range of a glDrawElements that no element names is never looked at (measured:
+  // a quad strip from elements takes the inside split beside an unused vertex with w = 0).
+  size_t whole = c_.elements_.empty() ? verts.size() : c_.elements_.size();
+  const GLenum m = c_.prim_mode_;
+  if (m == GL_TRIANGLES) whole -= whole % 3;
+  else if (m == GL_QUADS) whole -= whole % 4;
+  else if (m == GL_QUAD_STRIP) whole = whole < 4 ? 0 : whole - whole % 2;
+  else if (whole < 3) whole = 0;
+  for (size_t k = 0; k < whole && !any_outside_; ++k) any_outside_ = c_.outside_[index(k)] != 0;
 }
 
 // One triangle: inside the view volume from the per-vertex window positions, otherwise clipped.
