@@ -260,6 +260,7 @@ class Context {
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void set_color_varies(bool v);
+  void colour_joins_format();  // immediate.cpp: Mesa's vbo re-lays vertices when a glColor3 joins its format
   bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
   void flush_primitive();  // primitive.cpp, through its Assembly
   friend class Assembly;

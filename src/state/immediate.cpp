@@ -1,6 +1,8 @@
 // Immediate mode (GL 2.1 section 2.6): glBegin / glVertex / glEnd and the current normal and
 // colour. GL_TRIANGLES while rendering in float keeps the vertices as sent and lights them
 // together at glEnd on the triangle-list path; every other primitive goes vertex by vertex.
+#include <algorithm>
+
 #include "state/context.h"
 #include "state/gl_rules.h"
 
@@ -17,6 +19,7 @@ void Context::Color(double r, double g, double b, double a, int components) {
   if (!spec_) {
     if (in_begin_ && prim_mode_ == GL_LINE_LOOP && components > color_size_ && !verts_.empty())
       deviations_.insert(kLineLoopWrap);  // docs/deviations.md row 48
+    if (in_begin_ && color_size_ == 0 && components == 3 && flushed_color_.a != 1) colour_joins_format();
     if (components > color_size_) color_size_ = color_active_ = components;
     else if (components < color_active_) {
       color_active_ = components;
@@ -30,6 +33,62 @@ void Context::Color(double r, double g, double b, double a, int components) {
   flushed_color_ = color_;  // GL 2.1: tracked at once
   update_color_material();
 }
+// A glColor3 inside glBegin/glEnd whose colour is not yet in Mesa's vbo vertex format: the vbo
+// draws the primitives it holds whole (vbo_exec_wrap_upgrade_vertex), keeps the vertices the rest of
+// the primitive needs, and lays those out again with the colour as the state holds it at three
+// components, so their alpha becomes 1 (the vertices drawn already keep the state's alpha).
+// Measured per mode in feedback: lines, triangles and quads keep the unfinished primitive's
+// vertices; a line strip its last; a fan and a polygon the first and the last; a triangle or quad
+// strip its last 2, or 3 after an odd count (an even number of triangles drawn keeps the strip's
+// winding), or every vertex before its first whole primitive. A line loop's wrap is named, not
+// modelled (kLineLoopWrap).
+void Context::colour_joins_format() {
+  const size_t n = immediate_list_ ? list_pos_.size() : verts_.size();
+  if (n == 0) return;
+  size_t keep = 0;
+  bool shared = false;  // the kept vertices belong to primitives already drawn too
+  switch (prim_mode_) {
+    case GL_LINES: keep = n % 2; break;
+    case GL_TRIANGLES: keep = n % 3; break;
+    case GL_QUADS: keep = n % 4; break;
+    case GL_LINE_STRIP: keep = 1, shared = n >= 2; break;
+    case GL_TRIANGLE_FAN: case GL_POLYGON: keep = n < 3 ? n : 2, shared = n >= 3; break;
+    case GL_TRIANGLE_STRIP: case GL_QUAD_STRIP:
+      keep = n < (prim_mode_ == GL_QUAD_STRIP ? 4u : 3u) ? n : 2 + n % 2;
+      shared = keep < n;
+      break;
+    default: return;  // points keep nothing; line loops: kLineLoopWrap
+  }
+  if (immediate_list_) {  // GL_TRIANGLES: the unfinished triangle's colours, lit at glEnd
+    if (!list_color_.empty())
+      for (size_t i = n - keep; i < n; ++i) list_color_[i].a = 1;
+    return;
+  }
+  std::vector<raster::Vertex> kept;
+  if (prim_mode_ == GL_TRIANGLE_FAN || prim_mode_ == GL_POLYGON) {
+    kept.push_back(verts_.front());
+    if (keep == 2) kept.push_back(verts_.back());
+  } else {
+    kept.assign(verts_.end() - std::ptrdiff_t(keep), verts_.end());
+  }
+  if (shared) {
+    // The strip's whole primitives drawn from the vertices before the kept ones, and those.
+    if (prim_mode_ == GL_TRIANGLE_STRIP || prim_mode_ == GL_QUAD_STRIP) verts_.resize(n - keep + 2);
+    flush_primitive();
+  }
+  // The alpha the vertex stage took from the colour: unlit, or lit with colour material on the
+  // diffuse colour of that face.
+  const bool diffuse = color_material_ && (cm_mode_ == GL_DIFFUSE || cm_mode_ == GL_AMBIENT_AND_DIFFUSE);
+  const bool front = !lighting_ || (diffuse && cm_face_ != GL_BACK);
+  const bool back = !lighting_ || (diffuse && cm_face_ != GL_FRONT);
+  for (raster::Vertex& v : kept) {
+    if (front) v.front.a = 1;
+    if (back) v.back.a = 1;
+  }
+  if (shared) verts_ = std::move(kept);
+  else std::copy(kept.begin(), kept.end(), verts_.end() - std::ptrdiff_t(keep));
+}
+
 void Context::Vertex(double x, double y, double z, double w) {
   if (!in_begin_) return stray_vertex();  // outside glBegin/glEnd a vertex draws nothing (undefined in GL)
   format_has_position_ = !spec_;
