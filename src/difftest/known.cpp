@@ -161,6 +161,13 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kNonfiniteVertex) !=
                             soft.deviations.end();
        }},
+      // Row 49: what was drawn or fed back.
+      {"zero-clip-vertex", state::kZeroClipVertex,
+       [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         const bool kind = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels";
+         return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kZeroClipVertex) !=
+                            soft.deviations.end();
+       }},
   };
   return v;
 }

@@ -46,6 +46,9 @@ inline constexpr const char* kColorShrinkInPrimitive =
 inline constexpr const char* kNonfiniteVertex =
     "a line, quad or polygon vertex with a NaN or infinite position or normal: undefined in GL; Mesa's clipper "
     "and lighting keep remnants soft does not reproduce";
+inline constexpr const char* kZeroClipVertex =
+    "a vertex at clip coordinates (0, 0, 0, 0) in a line, quad or polygon: inside every clip plane, but its window "
+    "position is 0 / 0 (undefined in GL); Mesa's clipper and rasterizer place it where soft does not";
 inline constexpr const char* kDrawPixelsFormat =
     "glDrawPixels with a format or type soft does not implement (depth, stencil, colour index, the integer and "
     "packed types): GL_INVALID_OPERATION and nothing drawn, where Mesa draws";

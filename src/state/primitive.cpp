@@ -100,7 +100,10 @@ void Assembly::map_inside() {
   else if (m == GL_QUADS) whole -= whole % 4;
   else if (m == GL_QUAD_STRIP) whole = whole < 4 ? 0 : whole - whole % 2;
   else if (whole < 3) whole = 0;
-  for (size_t k = 0; k < whole && !any_outside_; ++k) any_outside_ = c_.outside_[index(k)] != 0;
+  for (size_t k = 0; k < whole; ++k) {
+    any_outside_ = any_outside_ || c_.outside_[index(k)] != 0;
+    if (c_.verts_[index(k)].clip == glm::dvec4(0)) c_.deviations_.insert(kZeroClipVertex);
+  }
 }
 
 // One triangle: inside the view volume from the per-vertex window positions, otherwise clipped.
