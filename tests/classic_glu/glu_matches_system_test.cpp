@@ -1,0 +1,22 @@
+// libGLU.so.1 of ffcompat against the system's: the probe (glu_probe.c) prints every GL call GLU
+// makes for quadrics in every style, normal mode, orientation and texture setting, the matrices of
+// the matrix helpers, projections and strings; built on either library, the two outputs must be
+// the same, line for line (floats in exact hexadecimal).
+#include "probe_output.h"
+
+#include <gtest/gtest.h>
+
+#ifdef FFCOMPAT_GLU_PROBE_SYSTEM
+
+TEST(ClassicGlu, QuadricsMatricesAndStringsMatchTheSystemGlu) {
+  const ffc::test::ProbeOutput system = ffc::test::run_probe(FFCOMPAT_GLU_PROBE_SYSTEM);
+  const ffc::test::ProbeOutput ours = ffc::test::run_probe(FFCOMPAT_GLU_PROBE_OURS);
+  ASSERT_EQ(system.status, 0) << "system probe failed";
+  ASSERT_EQ(ours.status, 0) << "our probe failed";
+  // The probe must have drawn something for the comparison to mean anything.
+  ASSERT_GT(ffc::test::count_prefix(system.lines, "Begin 0x"), 10000u);
+  ASSERT_GT(ffc::test::count_prefix(system.lines, "MultMatrix"), 10u);
+  EXPECT_PRED_FORMAT2(ffc::test::same_lines, system.lines, ours.lines);
+}
+
+#endif
