@@ -36,8 +36,8 @@ struct RunOptions {
 };
 
 // Where our libGL.so.1 & co. are: $FFCOMPAT_CLASSIC_DIR, else beside this executable (the build
-// tree's build/classic), else the folder this build was configured with, else an installed
-// prefix's lib/ffcompat/classic.
+// tree's build/classic), else an installed prefix's lib/ffcompat or lib/<multiarch>/ffcompat
+// (where `cmake --install` puts them), else the build folder this binary was configured with.
 std::string classic_dir() {
   auto has_libs = [](const fs::path& d) { return fs::exists(d / "libGL.so.1") && fs::exists(d / "libglut.so.3"); };
   if (const char* env = std::getenv("FFCOMPAT_CLASSIC_DIR")) return env;
@@ -46,7 +46,11 @@ std::string classic_dir() {
   std::vector<fs::path> candidates;
   if (!ec) {
     candidates.push_back(exe.parent_path() / "classic");
-    candidates.push_back(exe.parent_path().parent_path() / "lib" / "ffcompat" / "classic");
+    const fs::path lib = exe.parent_path().parent_path() / "lib";
+    candidates.push_back(lib / "ffcompat");
+    if (fs::is_directory(lib, ec))
+      for (const auto& entry : fs::directory_iterator(lib, ec))
+        if (entry.is_directory()) candidates.push_back(entry.path() / "ffcompat");
   }
 #ifdef FFCOMPAT_CLASSIC_BUILD_DIR
   candidates.push_back(FFCOMPAT_CLASSIC_BUILD_DIR);
@@ -54,7 +58,7 @@ std::string classic_dir() {
   for (const fs::path& d : candidates)
     if (has_libs(d)) return d.string();
   throw std::runtime_error("cannot find ffcompat's libGL.so.1 and libglut.so.3 (looked beside the ffcompat binary, in "
-                           "../lib/ffcompat/classic and in the build's classic/ folder); set FFCOMPAT_CLASSIC_DIR");
+                           "../lib/ffcompat, ../lib/*/ffcompat and in the build's classic/ folder); set FFCOMPAT_CLASSIC_DIR");
 }
 
 struct Outcome {

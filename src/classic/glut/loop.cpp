@@ -246,7 +246,6 @@ void frame_shown(Window& w) {
 }
 
 void loop_turn() {
-  State& s = state();
   Run& r = run();
   if (r.windowed) windowed_poll();
   else deliver_script();
