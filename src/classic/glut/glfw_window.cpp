@@ -206,6 +206,7 @@ void windowed_open(Window& w) {
   s.window = glfwCreateWindow(w.width, w.height, w.title.c_str(), nullptr, nullptr);
   if (!s.window) error("windowed run: GLFW could not open an EGL / OpenGL ES 2 window");
   s.glut_id = w.id;
+  ffcompat_surface_make_current(nullptr);  // see windowed_show
   glfwMakeContextCurrent(s.window);
   load_es2(s.gl);
   const Es2& g = s.gl;
@@ -231,14 +232,17 @@ void windowed_open(Window& w) {
   glfwSetCursorPosCallback(s.window, on_cursor);
   glfwSetScrollCallback(s.window, on_scroll);
   glfwSetCursorEnterCallback(s.window, on_enter);
-  // The EGL context and an OSMesa context may share Mesa's notion of the current context: give
-  // the program its surface back.
+  glfwMakeContextCurrent(nullptr);
   if (w.surface) ffcompat_surface_make_current(w.surface);
 }
 
 void windowed_show(Window& w, const unsigned char* rgba) {
   Shown& s = shown();
   if (!s.window) return;
+  // The mesa backend's OSMesa and GLFW's EGL share Mesa's record of the current context (one
+  // libglapi): EGL would take OSMesa's context for its own and crash (measured). So no surface is
+  // current while the window draws, and the EGL context is released before the surface returns.
+  ffcompat_surface_make_current(nullptr);
   glfwMakeContextCurrent(s.window);
   const Es2& g = s.gl;
   int fw = 0, fh = 0;
@@ -255,6 +259,7 @@ void windowed_show(Window& w, const unsigned char* rgba) {
   g.EnableVertexAttribArray(0);
   g.DrawArrays(kTriangleStrip, 0, 4);
   glfwSwapBuffers(s.window);
+  glfwMakeContextCurrent(nullptr);
   if (Window* current = state().current) ffcompat_surface_make_current(current->surface);
 }
 
