@@ -1,6 +1,6 @@
 // The glut*Func and glut*FuncUcall registrations: each stores the callback on the current window
-// (or globally: idle, timers, app status). Generated once by hand from freeglut_std.h,
-// freeglut_ext.h and freeglut_ucall.h; the headers check every prototype.
+// (or globally: idle, timers, app status). <GL/freeglut.h> declares every one, so the compiler
+// checks each prototype against freeglut's.
 #include "glut_state.h"
 
 using namespace ffc::glut;

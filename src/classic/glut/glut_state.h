@@ -2,6 +2,7 @@
 // One process-wide instance (glut::state()); GLUT is single-threaded by contract.
 #pragma once
 #include <GL/freeglut.h>
+#include <GL/freeglut_ucall.h>
 
 #include <cstdarg>
 #include <map>

@@ -61,35 +61,30 @@ int parse_geometry(const char* text, int* x, int* y, unsigned* w, unsigned* h) {
 }
 }  // namespace
 
+namespace {
+// Through the program's glutInitErrorFunc / glutInitWarningFunc callback when it set one (plain or
+// with user data), else on stderr.
+void vsay(void (*func)(const char*, va_list, void*), bool plain, void* data, const char* fmt, va_list ap) {
+  if (!func) vreport(fmt, ap);
+  else if (plain) reinterpret_cast<void (*)(const char*, va_list)>(reinterpret_cast<void*>(func))(fmt, ap);
+  else func(fmt, ap, data);
+}
+}  // namespace
+
 void error(const char* fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
-  State& s = state();
-  if (s.error_func) {
-    if (s.error_plain)
-      reinterpret_cast<void (*)(const char*, va_list)>(reinterpret_cast<void*>(s.error_func))(fmt, ap);
-    else
-      s.error_func(fmt, ap, s.error_data);
-    va_end(ap);
-  } else {
-    vreport(fmt, ap);
-    va_end(ap);
-  }
+  const State& s = state();
+  vsay(s.error_func, s.error_plain, s.error_data, fmt, ap);
+  va_end(ap);
   std::exit(1);  // freeglut exits after the error callback returns too
 }
 
 void warning(const char* fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
-  State& s = state();
-  if (s.warning_func) {
-    if (s.warning_plain)
-      reinterpret_cast<void (*)(const char*, va_list)>(reinterpret_cast<void*>(s.warning_func))(fmt, ap);
-    else
-      s.warning_func(fmt, ap, s.warning_data);
-  } else {
-    vreport(fmt, ap);
-  }
+  const State& s = state();
+  vsay(s.warning_func, s.warning_plain, s.warning_data, fmt, ap);
   va_end(ap);
 }
 

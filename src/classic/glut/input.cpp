@@ -11,25 +11,21 @@ namespace {
 template <typename F>
 void with_window(Window& w, int modifiers, F f) {
   State& s = state();
-  const int id = w.id;
   Window* saved = s.current;
   make_current(&w);
   s.modifiers = modifiers;
   f();
   s.modifiers = -1;
   if (saved && window_by_id(saved->id)) make_current(saved);
-  (void)id;
 }
 
 void button(Window& w, const Event& e, int x, int y, int updown) {
-  const int id = w.id;
   if (e.button >= 3 && e.button <= 4 && w.mouse_wheel) {
     // freeglut reports a wheel step on the press only: wheel 0, direction +1 (3) or -1 (4)
     if (updown == GLUT_DOWN) with_window(w, e.modifiers, [&] { w.mouse_wheel(0, e.button == 3 ? 1 : -1, x, y); });
     return;
   }
   if (w.mouse) with_window(w, e.modifiers, [&] { w.mouse(e.button, updown, x, y); });
-  (void)id;
 }
 
 }  // namespace

@@ -7,28 +7,23 @@ using namespace ffc::glut;
 
 extern "C" {
 
-void glutButtonBoxFunc(void (*callback)(int, int)) {
-  (void)callback;
+void glutButtonBoxFunc(void (*)(int, int)) {
   say_once("glutButtonBoxFunc", "there is no button box");
 }
 
-void glutButtonBoxFuncUcall(void (*callback)(int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutButtonBoxFuncUcall(void (*)(int, int, void*), void*) {
   say_once("glutButtonBoxFuncUcall", "there is no button box");
 }
 
-void glutCopyColormap(int window) {
-  (void)window;
+void glutCopyColormap(int) {
   say_once("glutCopyColormap", "windows are RGBA, with no colour index map");
 }
 
-void glutDialsFunc(void (*callback)(int, int)) {
-  (void)callback;
+void glutDialsFunc(void (*)(int, int)) {
   say_once("glutDialsFunc", "there is no dial box");
 }
 
-void glutDialsFuncUcall(void (*callback)(int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutDialsFuncUcall(void (*)(int, int, void*), void*) {
   say_once("glutDialsFuncUcall", "there is no dial box");
 }
 
@@ -45,25 +40,21 @@ void glutForceJoystickFunc(void) {
   say_once("glutForceJoystickFunc", "there is no joystick");
 }
 
-int glutGameModeGet(GLenum query) {
-  (void)query;
+int glutGameModeGet(GLenum) {
   say_once("glutGameModeGet", "there is no game mode (the window keeps its size)");
   return 0;
 }
 
-void glutGameModeString(const char* string) {
-  (void)string;
+void glutGameModeString(const char*) {
   say_once("glutGameModeString", "there is no game mode (the window keeps its size)");
 }
 
-GLfloat glutGetColor(int color, int component) {
-  (void)color, (void)component;
+GLfloat glutGetColor(int, int) {
   say_once("glutGetColor", "windows are RGBA, with no colour index map");
   return 0.0f;
 }
 
-int * glutGetModeValues(GLenum mode, int * size) {
-  (void)mode, (void)size;
+int * glutGetModeValues(GLenum, int *) {
   say_once("glutGetModeValues", "there are no multisample modes");
   return nullptr;
 }
@@ -72,13 +63,11 @@ void glutHideOverlay(void) {
   say_once("glutHideOverlay", "there are no overlays");
 }
 
-void glutJoystickFunc(void (*callback)(unsigned int, int, int, int), int pollInterval) {
-  (void)callback, (void)pollInterval;
+void glutJoystickFunc(void (*)(unsigned int, int, int, int), int) {
   say_once("glutJoystickFunc", "there is no joystick");
 }
 
-void glutJoystickFuncUcall(void (*callback)(unsigned int, int, int, int, void*), int pollInterval, void* user_data) {
-  (void)callback, (void)pollInterval, (void)user_data;
+void glutJoystickFuncUcall(void (*)(unsigned int, int, int, int, void*), int, void*) {
   say_once("glutJoystickFuncUcall", "there is no joystick");
 }
 
@@ -86,43 +75,35 @@ void glutLeaveGameMode(void) {
   say_once("glutLeaveGameMode", "there is no game mode (the window keeps its size)");
 }
 
-void glutMultiButtonFunc(void (*callback)(int, int, int, int, int)) {
-  (void)callback;
+void glutMultiButtonFunc(void (*)(int, int, int, int, int)) {
   say_once("glutMultiButtonFunc", "there is one pointer only");
 }
 
-void glutMultiButtonFuncUcall(void (*callback)(int, int, int, int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutMultiButtonFuncUcall(void (*)(int, int, int, int, int, void*), void*) {
   say_once("glutMultiButtonFuncUcall", "there is one pointer only");
 }
 
-void glutMultiEntryFunc(void (*callback)(int, int)) {
-  (void)callback;
+void glutMultiEntryFunc(void (*)(int, int)) {
   say_once("glutMultiEntryFunc", "there is one pointer only");
 }
 
-void glutMultiEntryFuncUcall(void (*callback)(int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutMultiEntryFuncUcall(void (*)(int, int, void*), void*) {
   say_once("glutMultiEntryFuncUcall", "there is one pointer only");
 }
 
-void glutMultiMotionFunc(void (*callback)(int, int, int)) {
-  (void)callback;
+void glutMultiMotionFunc(void (*)(int, int, int)) {
   say_once("glutMultiMotionFunc", "there is one pointer only");
 }
 
-void glutMultiMotionFuncUcall(void (*callback)(int, int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutMultiMotionFuncUcall(void (*)(int, int, int, void*), void*) {
   say_once("glutMultiMotionFuncUcall", "there is one pointer only");
 }
 
-void glutMultiPassiveFunc(void (*callback)(int, int, int)) {
-  (void)callback;
+void glutMultiPassiveFunc(void (*)(int, int, int)) {
   say_once("glutMultiPassiveFunc", "there is one pointer only");
 }
 
-void glutMultiPassiveFuncUcall(void (*callback)(int, int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutMultiPassiveFuncUcall(void (*)(int, int, int, void*), void*) {
   say_once("glutMultiPassiveFuncUcall", "there is one pointer only");
 }
 
@@ -130,8 +111,7 @@ void glutPostOverlayRedisplay(void) {
   say_once("glutPostOverlayRedisplay", "there are no overlays");
 }
 
-void glutPostWindowOverlayRedisplay(int window) {
-  (void)window;
+void glutPostWindowOverlayRedisplay(int) {
   say_once("glutPostWindowOverlayRedisplay", "there are no overlays");
 }
 
@@ -140,23 +120,19 @@ void glutRemoveOverlay(void) {
 }
 
 
-void glutSetColor(int color, GLfloat red, GLfloat green, GLfloat blue) {
-  (void)color, (void)red, (void)green, (void)blue;
+void glutSetColor(int, GLfloat, GLfloat, GLfloat) {
   say_once("glutSetColor", "windows are RGBA, with no colour index map");
 }
 
-void glutSetVertexAttribCoord3(GLint attrib) {
-  (void)attrib;
+void glutSetVertexAttribCoord3(GLint) {
   say_once("glutSetVertexAttribCoord3", "the shapes draw with the fixed-function pipeline");
 }
 
-void glutSetVertexAttribNormal(GLint attrib) {
-  (void)attrib;
+void glutSetVertexAttribNormal(GLint) {
   say_once("glutSetVertexAttribNormal", "the shapes draw with the fixed-function pipeline");
 }
 
-void glutSetVertexAttribTexCoord2(GLint attrib) {
-  (void)attrib;
+void glutSetVertexAttribTexCoord2(GLint) {
   say_once("glutSetVertexAttribTexCoord2", "the shapes draw with the fixed-function pipeline");
 }
 
@@ -168,33 +144,27 @@ void glutShowOverlay(void) {
   say_once("glutShowOverlay", "there are no overlays");
 }
 
-void glutSpaceballButtonFunc(void (*callback)(int, int)) {
-  (void)callback;
+void glutSpaceballButtonFunc(void (*)(int, int)) {
   say_once("glutSpaceballButtonFunc", "there is no spaceball");
 }
 
-void glutSpaceballButtonFuncUcall(void (*callback)(int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutSpaceballButtonFuncUcall(void (*)(int, int, void*), void*) {
   say_once("glutSpaceballButtonFuncUcall", "there is no spaceball");
 }
 
-void glutSpaceballMotionFunc(void (*callback)(int, int, int)) {
-  (void)callback;
+void glutSpaceballMotionFunc(void (*)(int, int, int)) {
   say_once("glutSpaceballMotionFunc", "there is no spaceball");
 }
 
-void glutSpaceballMotionFuncUcall(void (*callback)(int, int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutSpaceballMotionFuncUcall(void (*)(int, int, int, void*), void*) {
   say_once("glutSpaceballMotionFuncUcall", "there is no spaceball");
 }
 
-void glutSpaceballRotateFunc(void (*callback)(int, int, int)) {
-  (void)callback;
+void glutSpaceballRotateFunc(void (*)(int, int, int)) {
   say_once("glutSpaceballRotateFunc", "there is no spaceball");
 }
 
-void glutSpaceballRotateFuncUcall(void (*callback)(int, int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutSpaceballRotateFuncUcall(void (*)(int, int, int, void*), void*) {
   say_once("glutSpaceballRotateFuncUcall", "there is no spaceball");
 }
 
@@ -202,43 +172,35 @@ void glutStopVideoResizing(void) {
   say_once("glutStopVideoResizing", "the screen is not resized");
 }
 
-void glutTabletButtonFunc(void (*callback)(int, int, int, int)) {
-  (void)callback;
+void glutTabletButtonFunc(void (*)(int, int, int, int)) {
   say_once("glutTabletButtonFunc", "there is no tablet");
 }
 
-void glutTabletButtonFuncUcall(void (*callback)(int, int, int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutTabletButtonFuncUcall(void (*)(int, int, int, int, void*), void*) {
   say_once("glutTabletButtonFuncUcall", "there is no tablet");
 }
 
-void glutTabletMotionFunc(void (*callback)(int, int)) {
-  (void)callback;
+void glutTabletMotionFunc(void (*)(int, int)) {
   say_once("glutTabletMotionFunc", "there is no tablet");
 }
 
-void glutTabletMotionFuncUcall(void (*callback)(int, int, void*), void* user_data) {
-  (void)callback, (void)user_data;
+void glutTabletMotionFuncUcall(void (*)(int, int, void*), void*) {
   say_once("glutTabletMotionFuncUcall", "there is no tablet");
 }
 
-void glutUseLayer(GLenum layer) {
-  (void)layer;
+void glutUseLayer(GLenum) {
   say_once("glutUseLayer", "there are no overlays");
 }
 
-void glutVideoPan(int x, int y, int width, int height) {
-  (void)x, (void)y, (void)width, (void)height;
+void glutVideoPan(int, int, int, int) {
   say_once("glutVideoPan", "the screen is not resized");
 }
 
-void glutVideoResize(int x, int y, int width, int height) {
-  (void)x, (void)y, (void)width, (void)height;
+void glutVideoResize(int, int, int, int) {
   say_once("glutVideoResize", "the screen is not resized");
 }
 
-int glutVideoResizeGet(GLenum query) {
-  (void)query;
+int glutVideoResizeGet(GLenum) {
   say_once("glutVideoResizeGet", "the screen is not resized");
   return 0;
 }
@@ -258,62 +220,49 @@ void glutJoystickGetMinRange(int ident, float* axes);
 void glutJoystickGetMaxRange(int ident, float* axes);
 void glutJoystickGetCenter(int ident, float* axes);
 
-int glutJoystickGetNumAxes(int ident) {
-  (void)ident;
+int glutJoystickGetNumAxes(int) {
   say_once("glutJoystickGetNumAxes", "there is no joystick");
   return 0;
 }
-int glutJoystickGetNumButtons(int ident) {
-  (void)ident;
+int glutJoystickGetNumButtons(int) {
   say_once("glutJoystickGetNumButtons", "there is no joystick");
   return 0;
 }
 // Always "not working": there is none.
-int glutJoystickNotWorking(int ident) {
-  (void)ident;
+int glutJoystickNotWorking(int) {
   say_once("glutJoystickNotWorking", "there is no joystick");
   return 1;
 }
-float glutJoystickGetDeadBand(int ident, int axis) {
-  (void)ident, (void)axis;
+float glutJoystickGetDeadBand(int, int) {
   say_once("glutJoystickGetDeadBand", "there is no joystick");
   return 0.0f;
 }
-void glutJoystickSetDeadBand(int ident, int axis, float db) {
-  (void)ident, (void)axis, (void)db;
+void glutJoystickSetDeadBand(int, int, float) {
   say_once("glutJoystickSetDeadBand", "there is no joystick");
 }
-float glutJoystickGetSaturation(int ident, int axis) {
-  (void)ident, (void)axis;
+float glutJoystickGetSaturation(int, int) {
   say_once("glutJoystickGetSaturation", "there is no joystick");
   return 0.0f;
 }
-void glutJoystickSetSaturation(int ident, int axis, float st) {
-  (void)ident, (void)axis, (void)st;
+void glutJoystickSetSaturation(int, int, float) {
   say_once("glutJoystickSetSaturation", "there is no joystick");
 }
-void glutJoystickSetMinRange(int ident, float* axes) {
-  (void)ident, (void)axes;
+void glutJoystickSetMinRange(int, float*) {
   say_once("glutJoystickSetMinRange", "there is no joystick");
 }
-void glutJoystickSetMaxRange(int ident, float* axes) {
-  (void)ident, (void)axes;
+void glutJoystickSetMaxRange(int, float*) {
   say_once("glutJoystickSetMaxRange", "there is no joystick");
 }
-void glutJoystickSetCenter(int ident, float* axes) {
-  (void)ident, (void)axes;
+void glutJoystickSetCenter(int, float*) {
   say_once("glutJoystickSetCenter", "there is no joystick");
 }
-void glutJoystickGetMinRange(int ident, float* axes) {
-  (void)ident, (void)axes;
+void glutJoystickGetMinRange(int, float*) {
   say_once("glutJoystickGetMinRange", "there is no joystick");
 }
-void glutJoystickGetMaxRange(int ident, float* axes) {
-  (void)ident, (void)axes;
+void glutJoystickGetMaxRange(int, float*) {
   say_once("glutJoystickGetMaxRange", "there is no joystick");
 }
-void glutJoystickGetCenter(int ident, float* axes) {
-  (void)ident, (void)axes;
+void glutJoystickGetCenter(int, float*) {
   say_once("glutJoystickGetCenter", "there is no joystick");
 }
 
