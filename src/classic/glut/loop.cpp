@@ -206,6 +206,14 @@ void expose() {
   for (auto& [id, w] : state().windows) w->redisplay = true;
 }
 
+// A busy turn (the idle callback ran, or the program drives the loop with glutMainLoopEvent) costs
+// 1 ms; one that shows nothing for 1000 turns is exposed.
+void busy_turn() {
+  Run& r = run();
+  ++r.now_ms;
+  if (++r.turns_without_frame >= 1000) expose();
+}
+
 // Headless sleep: wait for the next thing that can happen.
 void sleep_headless() {
   Run& r = run();
@@ -263,9 +271,12 @@ using namespace ffc::glut;
 
 extern "C" {
 
+// A program's own loop: one turn, then, headless, the time a busy turn takes (the program may be
+// waiting for the clock to pass a time of its own).
 void glutMainLoopEvent(void) {
   require_init("glutMainLoopEvent");
   loop_turn();
+  if (!state().running && headless()) busy_turn();
 }
 
 void glutMainLoop(void) {
@@ -285,11 +296,7 @@ void glutMainLoop(void) {
     }
     if (s.idle) {
       s.idle();
-      if (r.headless) {
-        ++r.now_ms;  // a busy turn takes time too
-        // An idle callback that never redraws: exposed after 1000 turns.
-        if (++r.turns_without_frame >= 1000) expose();
-      }
+      if (r.headless) busy_turn();
     } else if (r.headless) {
       sleep_headless();
     } else if (!redisplay_pending()) {
