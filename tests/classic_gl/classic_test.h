@@ -49,7 +49,7 @@ static ffcompat_surface* surface_on(const char* backend, int w, int h) {
   return s;
 }
 
-static int finish(void) {
+static inline int finish(void) {
   if (failures) printf("%d check(s) failed\n", failures);
   else printf("all checks passed\n");
   return failures ? 1 : 0;

@@ -2,6 +2,8 @@
 // osmesa.h), each with its table of entry points for the exports.
 #include "ffcompat_surface.h"
 
+#include <GL/gl.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -131,5 +133,14 @@ void ffcompat_surface_destroy(ffcompat_surface* s) {
 }
 
 void* ffcompat_get_proc_address(const char* name) { return ffc::classic::export_address(name); }
+
+// The loader classic programs reach for extensions with (GLX's, declared in <GL/glx.h>): the same
+// answer, so a function of gl.h loaded by name still goes to the current surface, and anything
+// else is null rather than a symbol the program cannot find at startup.
+using GlxProc = void (*)();
+GlxProc glXGetProcAddressARB(const GLubyte* name) {
+  return reinterpret_cast<GlxProc>(ffc::classic::export_address(reinterpret_cast<const char*>(name)));
+}
+GlxProc glXGetProcAddress(const GLubyte* name) { return glXGetProcAddressARB(name); }
 
 }  // extern "C"
