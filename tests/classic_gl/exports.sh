@@ -1,8 +1,9 @@
 #!/bin/sh
 # libGL.so.1 exports exactly the GLAPI functions of gl_exports.inc, glXGetProcAddress(ARB) and
 # the ffcompat_* surface API, is named libGL.so.1, and needs neither OSMesa nor any other libGL.
-#   exports.sh build/classic/libGL.so.1 src/classic/gl/gl_exports.inc
-lib=$1 inc=$2
+# And libOpenGL.so.0 exports nothing and needs libGL.so.1.
+#   exports.sh build/classic/libGL.so.1 src/classic/gl/gl_exports.inc build/classic/libOpenGL.so.0
+lib=$1 inc=$2 opengl=$3
 fail=0
 tmp=$(mktemp -d) && trap 'rm -rf "$tmp"' EXIT
 nm -D --defined-only "$lib" | awk '{print $NF}' | sort > "$tmp/defined"
@@ -31,5 +32,12 @@ needed=$(readelf -d "$lib" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p' | tr '\n' ' 
 case "$needed" in
   *OSMesa*|*libGL*|*glapi*) echo "FAILED: libGL.so.1 needs $needed"; fail=1 ;;
 esac
+if [ -n "$opengl" ]; then
+  extra=$(nm -D --defined-only "$opengl" | awk '{print $NF}' | tr '\n' ' ')
+  [ -z "$extra" ] || { echo "FAILED: libOpenGL.so.0 exports $extra"; fail=1; }
+  readelf -d "$opengl" | grep -q 'NEEDED.*\[libGL\.so\.1\]' || { echo "FAILED: libOpenGL.so.0 does not need libGL.so.1"; fail=1; }
+  [ "$(readelf -d "$opengl" | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')" = libOpenGL.so.0 ] ||
+    { echo "FAILED: libOpenGL.so.0's SONAME"; fail=1; }
+fi
 [ $fail = 0 ] && echo "libGL.so.1: $listed gl* exports and the surface API, nothing else; needs $needed"
 exit $fail
