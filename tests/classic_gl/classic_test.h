@@ -18,6 +18,7 @@
 #pragma weak ffcompat_surface_backend
 #pragma weak ffcompat_surface_destroy
 #pragma weak ffcompat_get_proc_address
+#pragma weak ffcompat_surface_resize
 
 static int failures = 0;
 #define CHECK(cond, ...)                                          \
