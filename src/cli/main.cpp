@@ -12,6 +12,7 @@ void add_report(CLI::App& app);  // report.cpp
 void add_stress(CLI::App& app);  // stress.cpp
 void add_fuzz(CLI::App& app);    // fuzz.cpp
 void add_run(CLI::App& app);     // run.cpp
+void add_calls(CLI::App& app);   // calls.cpp
 }
 
 // Exit codes, the same for every command (README, "The command line"):
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_stress(app);
   ffc::cli::add_fuzz(app);
   ffc::cli::add_run(app);
+  ffc::cli::add_calls(app);
   // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
   std::string commands;
   bool known = false;

@@ -18,6 +18,7 @@
 #pragma weak ffcompat_surface_backend
 #pragma weak ffcompat_surface_destroy
 #pragma weak ffcompat_get_proc_address
+#pragma weak ffcompat_surface_resize
 
 static int failures = 0;
 #define CHECK(cond, ...)                                          \
@@ -49,7 +50,7 @@ static ffcompat_surface* surface_on(const char* backend, int w, int h) {
   return s;
 }
 
-static int finish(void) {
+static inline int finish(void) {
   if (failures) printf("%d check(s) failed\n", failures);
   else printf("all checks passed\n");
   return failures ? 1 : 0;

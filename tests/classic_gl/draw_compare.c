@@ -1,6 +1,7 @@
-/* A lit smooth-shaded sphere (immediate mode), a lit quad and a colour-interpolated triangle
- * (client arrays) drawn on soft and on mesa through the plain gl* exports: the two pictures within
- * 1 step of each other, and a pixel of the quad at its hand-derived value on both. Two surfaces
+/* A lit smooth-shaded sphere and a lit quad (immediate mode), a lit flat-shaded pyramid
+ * (glDrawElements) and a colour-interpolated triangle (glDrawArrays) drawn on soft, soft-double
+ * and mesa through the plain gl* exports: each of ours within 1 step of Mesa's picture, and a
+ * pixel of the quad at its hand-derived value on both. Two surfaces
  * alive at once, switched with make_current, each keeping its own state. */
 #include <math.h>
 #include <string.h>
@@ -73,6 +74,39 @@ static void array_triangle(void) {
   glDisableClientState(GL_VERTEX_ARRAY);
 }
 
+/* A hexagonal pyramid seen from above, flat-shaded, lit, from client arrays by glDrawElements:
+ * each triangle's colour is its last vertex's (the provoking one). */
+static void lit_elements(void) {
+  float pos[7 * 3], nrm[7 * 3];
+  GLushort idx[6 * 3];
+  pos[0] = -0.6f, pos[1] = 0.6f, pos[2] = 0.3f;
+  nrm[0] = 0, nrm[1] = 0, nrm[2] = 1;
+  for (int i = 0; i < 6; ++i) {
+    const double a = M_PI / 3 * i;
+    pos[3 + 3 * i] = (float)(-0.6 + 0.3 * cos(a)), pos[4 + 3 * i] = (float)(0.6 + 0.3 * sin(a)), pos[5 + 3 * i] = 0;
+    nrm[3 + 3 * i] = (float)cos(a), nrm[4 + 3 * i] = (float)sin(a), nrm[5 + 3 * i] = 1;
+    idx[3 * i] = 0, idx[3 * i + 1] = (GLushort)(1 + i), idx[3 * i + 2] = (GLushort)(1 + (i + 1) % 6);
+  }
+  glEnable(GL_LIGHTING);
+  glEnable(GL_NORMALIZE);
+  glShadeModel(GL_FLAT);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, pos);
+  glNormalPointer(GL_FLOAT, 0, nrm);
+  glDrawElements(GL_TRIANGLES, 18, GL_UNSIGNED_SHORT, idx);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glShadeModel(GL_SMOOTH);
+}
+
+/* The rest of the picture, after lit_quad. */
+static void rest(void) {
+  sphere(0.3f, 0.35f, 0.55f, 16, 24);
+  lit_elements();
+  array_triangle();
+}
+
 static void clear(void) {
   glClearColor(0.1f, 0.2f, 0.3f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -84,7 +118,7 @@ static const unsigned char* px(const unsigned char* img, int x, int y_from_botto
 
 int main(void) {
   require_ffcompat();
-  static unsigned char soft_img[W * H * 4], mesa_img[W * H * 4];
+  static unsigned char soft_img[W * H * 4], mesa_img[W * H * 4], double_img[W * H * 4];
 
   ffcompat_surface* soft = surface_on("soft", W, H);
   CHECK(strcmp(ffcompat_surface_backend(soft), "soft") == 0, "backend %s", ffcompat_surface_backend(soft));
@@ -98,15 +132,22 @@ int main(void) {
   view();
   clear();
   lit_quad();
-  sphere(0.3f, 0.35f, 0.55f, 16, 24);
-  array_triangle();
+  rest();
   CHECK(glGetError() == GL_NO_ERROR, "a GL error on mesa");
 
   ffcompat_surface_make_current(soft);
   CHECK(glIsEnabled(GL_LIGHTING) == GL_TRUE, "soft's state did not survive the switch to mesa");
-  sphere(0.3f, 0.35f, 0.55f, 16, 24);
-  array_triangle();
+  rest();
   CHECK(glGetError() == GL_NO_ERROR, "a GL error on soft");
+
+  /* Our double-precision reference, the whole picture at once. */
+  ffcompat_surface* dbl = surface_on("soft-double", W, H);
+  view();
+  clear();
+  lit_quad();
+  rest();
+  ffcompat_surface_read_rgba(dbl, double_img);
+  ffcompat_surface_destroy(dbl);
 
   ffcompat_surface_read_rgba(soft, soft_img);
   ffcompat_surface_read_rgba(mesa, mesa_img);
@@ -120,17 +161,19 @@ int main(void) {
   CHECK(px(soft_img, 1, H - 2)[0] == 26 && px(soft_img, 1, H - 2)[1] == 51 && px(soft_img, 1, H - 2)[2] == 76,
         "soft clear colour");
 
-  int max_diff = 0, drawn = 0, apart = 0;
+  int max_diff = 0, drawn = 0, apart = 0, double_diff = 0;
   for (int i = 0; i < W * H * 4; ++i) {
     const int d = abs(soft_img[i] - mesa_img[i]);
     if (d > max_diff) max_diff = d;
     if (d) ++apart;
+    if (abs(double_img[i] - mesa_img[i]) > double_diff) double_diff = abs(double_img[i] - mesa_img[i]);
   }
   for (int i = 0; i < W * H; ++i)
     if (soft_img[4 * i] != 26 || soft_img[4 * i + 1] != 51 || soft_img[4 * i + 2] != 76) ++drawn;
-  printf("soft against mesa: largest difference %d steps, %d channels apart; %d pixels drawn\n", max_diff, apart,
-         drawn);
+  printf("soft against mesa: largest difference %d steps, %d channels apart; soft-double %d steps; %d pixels drawn\n",
+         max_diff, apart, double_diff, drawn);
   CHECK(max_diff <= 1, "soft and mesa %d steps apart", max_diff);
+  CHECK(double_diff <= 1, "soft-double and mesa %d steps apart", double_diff);
   /* The sphere (radius 26 pixels) alone covers over 2,000 pixels. */
   CHECK(drawn > 2000, "only %d pixels drawn", drawn);
 

@@ -7,6 +7,9 @@
 
 #include "classic_test.h"
 
+/* <GL/glx.h>'s, without the X11 headers it brings. */
+extern void (*glXGetProcAddressARB(const GLubyte* name))(void);
+
 int main(void) {
   require_ffcompat();
   ffcompat_surface* s = surface_on("mesa", 16, 16);
@@ -31,6 +34,8 @@ int main(void) {
   CHECK(ffcompat_get_proc_address("glMultiTexCoord4svARB") == (void*)&glMultiTexCoord4svARB, "the last ARB one");
   CHECK(ffcompat_get_proc_address("glNoSuchFunction") == NULL, "an unknown name has an address");
   CHECK(ffcompat_get_proc_address("ffcompat_surface_create") == NULL, "a non-GL name has an address");
+  CHECK((void*)glXGetProcAddressARB((const GLubyte*)"glEnd") == (void*)&glEnd, "glXGetProcAddressARB(glEnd)");
+  CHECK(glXGetProcAddressARB((const GLubyte*)"glXCreateContext") == NULL, "a GLX function has an address");
 
   /* A call through the address reaches Mesa. */
   typedef const GLubyte* (*GetString)(GLenum);

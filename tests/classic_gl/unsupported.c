@@ -92,6 +92,9 @@ int main(void) {
   CHECK(strstr(captured, "unknown backend 'no-such-backend'") && strstr(captured, "soft") && strstr(captured, "mesa"),
         "stderr was: %s", captured);
   setenv("FFCOMPAT_BACKEND", "soft", 1);
-  CHECK(ffcompat_surface_create(0, 8) == NULL, "a 0x8 surface");
+  capture_begin(&tmp, &saved);
+  ffcompat_surface* empty = ffcompat_surface_create(0, 8);
+  capture_end(tmp, saved);
+  CHECK(empty == NULL && strstr(captured, "0x8"), "a 0x8 surface; stderr was: %s", captured);
   return finish();
 }

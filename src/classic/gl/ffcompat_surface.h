@@ -21,6 +21,11 @@ ffcompat_surface* ffcompat_surface_create(int width, int height);
 void ffcompat_surface_make_current(ffcompat_surface* s);
 /* Finishes drawing; writes width * height * 4 bytes, RGBA, the top row first. */
 void ffcompat_surface_read_rgba(ffcompat_surface* s, unsigned char* out);
+/* Gives the surface a new width x height framebuffer (a window resized), keeping its GL state,
+ * the viewport included; the new buffer's contents are undefined until cleared. 0 on success; -1
+ * for a size outside 1..16384 or a NULL surface, the surface unchanged. Which surface is current
+ * does not change. */
+int ffcompat_surface_resize(ffcompat_surface* s, int width, int height);
 int ffcompat_surface_width(const ffcompat_surface* s);
 int ffcompat_surface_height(const ffcompat_surface* s);
 /* The backend's name ("soft", "mesa", ...). */

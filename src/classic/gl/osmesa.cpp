@@ -113,6 +113,14 @@ bool OsMesaSurface::make_current() {
                                height_);
 }
 
+void OsMesaSurface::resize(int width, int height) {
+  auto ctx = static_cast<OSMesaContext>(context_);
+  with_current(ctx, buffer_, width_, height_, finish);
+  buffer_.assign(size_t(width) * height * 4, 0);
+  width_ = width, height_ = height;
+  if (osmesa().current() == ctx) make_current();
+}
+
 void OsMesaSurface::fill(Table& table) const {
   for (int i = 0; i < kEntryCount; ++i) table.fn[i] = reinterpret_cast<void*>(osmesa().proc(kEntryNames[i]));
 }
@@ -132,6 +140,7 @@ std::unique_ptr<OsMesaSurface> OsMesaSurface::make(int, int, std::string& why) {
 }
 OsMesaSurface::~OsMesaSurface() = default;
 bool OsMesaSurface::make_current() { return false; }
+void OsMesaSurface::resize(int, int) {}
 void OsMesaSurface::fill(Table&) const {}
 void OsMesaSurface::read_rgba(unsigned char*) {}
 

@@ -22,6 +22,9 @@ class OsMesaSurface {
   OsMesaSurface& operator=(const OsMesaSurface&) = delete;
 
   bool make_current();
+  // A new framebuffer, the context's state kept: the queued drawing is finished into the old one,
+  // and OSMesa takes the new size when the context is next made current (now, if it is current).
+  void resize(int width, int height);
   // Each entry point by OSMesaGetProcAddress.
   void fill(Table& table) const;
   // Finishes drawing and copies the picture, top row first.

@@ -2,6 +2,8 @@
 // osmesa.h), each with its table of entry points for the exports.
 #include "ffcompat_surface.h"
 
+#include <GL/gl.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -12,6 +14,8 @@
 #include "backends/backend.h"
 #include "image/image.h"
 #include "osmesa.h"
+#include "raster/raster.h"
+#include "state/context.h"
 #include "state/soft_gl.h"
 #include "table.h"
 
@@ -48,6 +52,8 @@ std::string valid_names() {
   return mesa ? out : out + ", mesa";
 }
 
+bool valid_size(int width, int height) { return width > 0 && height > 0 && width <= 16384 && height <= 16384; }
+
 bool is_soft(const std::string& name) {
   for (const std::string& n : ffc::backends::names())
     if (n == name && n != "mesa") return true;
@@ -66,7 +72,7 @@ ffcompat_surface* ffcompat_surface_create(int width, int height) {
                  valid_names().c_str());
     return nullptr;
   }
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+  if (!valid_size(width, height)) {
     std::fprintf(stderr, "ffcompat: surface size %dx%d is outside 1..16384\n", width, height);
     return nullptr;
   }
@@ -120,6 +126,28 @@ void ffcompat_surface_read_rgba(ffcompat_surface* s, unsigned char* out) {
   std::memcpy(out, img.rgba.data(), img.rgba.size());
 }
 
+int ffcompat_surface_resize(ffcompat_surface* s, int width, int height) {
+  if (!s || !valid_size(width, height)) return -1;
+  if (s->mesa) {
+    s->mesa->resize(width, height);
+  } else {
+    // The soft context is reached by making it current (the backend keeps it to itself); the
+    // context that was current before comes back after. A new Framebuffer is all a size is: the
+    // rasterizer reads the size from it at every draw.
+    ffc::state::Context* const previous = ffc::state::Context::current();
+    try {
+      s->soft->resume();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ffcompat: cannot resize the %s surface: %s\n", s->backend.c_str(), e.what());
+      return -1;
+    }
+    ffc::state::Context::current()->framebuffer() = ffc::raster::Framebuffer(width, height);
+    ffc::state::Context::make_current(previous);
+  }
+  s->width = width, s->height = height;
+  return 0;
+}
+
 int ffcompat_surface_width(const ffcompat_surface* s) { return s ? s->width : 0; }
 int ffcompat_surface_height(const ffcompat_surface* s) { return s ? s->height : 0; }
 const char* ffcompat_surface_backend(const ffcompat_surface* s) { return s ? s->backend.c_str() : ""; }
@@ -131,5 +159,14 @@ void ffcompat_surface_destroy(ffcompat_surface* s) {
 }
 
 void* ffcompat_get_proc_address(const char* name) { return ffc::classic::export_address(name); }
+
+// The loader classic programs reach for extensions with (GLX's, declared in <GL/glx.h>): the same
+// answer, so a function of gl.h loaded by name still goes to the current surface, and anything
+// else is null rather than a symbol the program cannot find at startup.
+using GlxProc = void (*)();
+GlxProc glXGetProcAddressARB(const GLubyte* name) {
+  return reinterpret_cast<GlxProc>(ffc::classic::export_address(reinterpret_cast<const char*>(name)));
+}
+GlxProc glXGetProcAddress(const GLubyte* name) { return glXGetProcAddressARB(name); }
 
 }  // extern "C"

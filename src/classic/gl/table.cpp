@@ -15,7 +15,7 @@ const char* const kEntryNames[kEntryCount] = {
 #undef FFC_CLASSIC_GL
 };
 
-thread_local const Table* g_current = nullptr;
+thread_local const Table* g_current __attribute__((tls_model("initial-exec"))) = nullptr;
 
 namespace {
 std::atomic<bool> g_reported[kEntryCount];

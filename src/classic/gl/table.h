@@ -21,8 +21,11 @@ struct Table {
   bool soft = false;         // a missing call records GL_INVALID_OPERATION on the soft context
 };
 
-// The table of the surface current on this thread (null: none), as the exports read it.
-extern thread_local const Table* g_current;
+// The table of the surface current on this thread (null: none), as the exports read it. Initial-
+// exec: read straight off the thread pointer, where the default model for a shared library calls
+// __tls_get_addr on every gl* call (measured, glNormal3f on soft: 77 ns a call, 58 with this, 28
+// for the same soft entry point called from a static program).
+extern thread_local const Table* g_current __attribute__((tls_model("initial-exec")));
 
 inline void* entry(Entry e) {
   const Table* t = g_current;
