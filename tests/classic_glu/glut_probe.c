@@ -94,6 +94,18 @@ static void text(void) {
     }
     glutStrokeString(strokes[f], sample);
   }
+  /* A font of the other kind draws nothing and measures 0 (both libraries warn on stderr). */
+  printf("# wrong kind of font: %d %d %d %d %a\n", glutBitmapWidth(GLUT_STROKE_ROMAN, 'a'),
+         glutBitmapHeight(GLUT_STROKE_ROMAN), glutStrokeWidth(GLUT_BITMAP_8_BY_13, 'a'),
+         glutStrokeLength(GLUT_BITMAP_9_BY_15, sample), glutStrokeHeight(GLUT_BITMAP_8_BY_13));
+  glutBitmapCharacter(GLUT_STROKE_ROMAN, 'a');
+  glutBitmapString(GLUT_STROKE_MONO_ROMAN, sample);
+  glutStrokeCharacter(GLUT_BITMAP_8_BY_13, 'a');
+  glutStrokeString(GLUT_BITMAP_HELVETICA_12, sample);
+  glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"");
+  glutStrokeString(GLUT_STROKE_ROMAN, (const unsigned char *)"");
+  printf("empty %d %d\n", glutBitmapLength(GLUT_BITMAP_8_BY_13, (const unsigned char *)""),
+         glutStrokeLength(GLUT_STROKE_ROMAN, (const unsigned char *)""));
 }
 
 int main(int argc, char **argv) {
