@@ -108,7 +108,11 @@ static void text(void) {
          glutStrokeLength(GLUT_STROKE_ROMAN, (const unsigned char *)""));
 }
 
-int main(int argc, char **argv) {
+/* feedback_harness.c runs the probe under its own main. */
+#ifndef PROBE_MAIN
+#define PROBE_MAIN main
+#endif
+int PROBE_MAIN(int argc, char **argv) {
 #ifdef PROBE_GLUT_INIT
   glutInit(&argc, argv);
 #else
