@@ -23,4 +23,20 @@ TEST(ClassicGlu, QuadricsMatricesAndStringsMatchTheSystemGlu) {
   EXPECT_PRED_FORMAT2(ffc::test::same_lines, system.lines, ours.lines);
 }
 
+// A program linked with the system's -lGLU, unchanged, loads ours when our folder comes first on
+// the library path (same SONAME, same unversioned symbols), and prints the same.
+TEST(ClassicGlu, AProgramLinkedWithTheSystemGluRunsOnOurs) {
+  const std::string with_ours = std::string("LD_LIBRARY_PATH=") + FFCOMPAT_CLASSIC_GLU_DIR + " ";
+  const ffc::test::ProbeOutput system = ffc::test::run_probe(FFCOMPAT_GLU_PROBE_SYSTEM);
+  const ffc::test::ProbeOutput swapped = ffc::test::run_probe(with_ours + FFCOMPAT_GLU_PROBE_SYSTEM);
+  const ffc::test::ProbeOutput loaded = ffc::test::run_probe(with_ours + "ldd " + FFCOMPAT_GLU_PROBE_SYSTEM);
+  ASSERT_EQ(swapped.status, 0);
+  // The loader took ours.
+  bool ours_loaded = false;
+  for (const std::string &line : loaded.lines)
+    ours_loaded |= line.find("libGLU.so.1 => " FFCOMPAT_CLASSIC_GLU_DIR "/libGLU.so.1") != std::string::npos;
+  EXPECT_TRUE(ours_loaded);
+  EXPECT_PRED_FORMAT2(ffc::test::same_lines, system.lines, swapped.lines);
+}
+
 #endif
