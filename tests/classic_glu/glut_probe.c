@@ -5,6 +5,10 @@
 #include <GL/freeglut.h>
 #include <stdio.h>
 
+#ifndef PROBE_GLUT_INIT
+void probe_set_stroke_join_dots(int on); /* stroke_join_dots.cpp */
+#endif
+
 static void round_shapes(void) {
   static const struct { double a, b; int n, m; } p[] = {{1.0, 2.0, 12, 8}, {0.5, 1.5, 5, 2}, {2.0, 0.75, 3, 1},
                                                        {1.25, 1.0, 30, 20}, {1.0, 1.0, 0, 4}, {1.0, 1.0, 4, 0}};
@@ -94,9 +98,39 @@ static void text(void) {
     }
     glutStrokeString(strokes[f], sample);
   }
+  /* Join dots: glutStrokeCharacter then also draws each strip's vertices as points. */
+#ifdef PROBE_GLUT_INIT
+  glutSetOption(GLUT_STROKE_FONT_DRAW_JOIN_DOTS, GL_TRUE);
+#else
+  probe_set_stroke_join_dots(1);
+#endif
+  printf("# join dots\n");
+  glutStrokeCharacter(GLUT_STROKE_ROMAN, 'B');
+  glutStrokeString(GLUT_STROKE_MONO_ROMAN, sample);
+#ifdef PROBE_GLUT_INIT
+  glutSetOption(GLUT_STROKE_FONT_DRAW_JOIN_DOTS, GL_FALSE);
+#else
+  probe_set_stroke_join_dots(0);
+#endif
+  /* A font of the other kind draws nothing and measures 0 (both libraries warn on stderr). */
+  printf("# wrong kind of font: %d %d %d %d %a\n", glutBitmapWidth(GLUT_STROKE_ROMAN, 'a'),
+         glutBitmapHeight(GLUT_STROKE_ROMAN), glutStrokeWidth(GLUT_BITMAP_8_BY_13, 'a'),
+         glutStrokeLength(GLUT_BITMAP_9_BY_15, sample), glutStrokeHeight(GLUT_BITMAP_8_BY_13));
+  glutBitmapCharacter(GLUT_STROKE_ROMAN, 'a');
+  glutBitmapString(GLUT_STROKE_MONO_ROMAN, sample);
+  glutStrokeCharacter(GLUT_BITMAP_8_BY_13, 'a');
+  glutStrokeString(GLUT_BITMAP_HELVETICA_12, sample);
+  glutBitmapString(GLUT_BITMAP_8_BY_13, (const unsigned char *)"");
+  glutStrokeString(GLUT_STROKE_ROMAN, (const unsigned char *)"");
+  printf("empty %d %d\n", glutBitmapLength(GLUT_BITMAP_8_BY_13, (const unsigned char *)""),
+         glutStrokeLength(GLUT_STROKE_ROMAN, (const unsigned char *)""));
 }
 
-int main(int argc, char **argv) {
+/* feedback_harness.c runs the probe under its own main. */
+#ifndef PROBE_MAIN
+#define PROBE_MAIN main
+#endif
+int PROBE_MAIN(int argc, char **argv) {
 #ifdef PROBE_GLUT_INIT
   glutInit(&argc, argv);
 #else

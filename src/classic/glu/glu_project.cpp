@@ -134,7 +134,7 @@ FFC_GLU_EXPORT void GLAPIENTRY gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble 
 }
 
 FFC_GLU_EXPORT void GLAPIENTRY gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY, GLint *viewport) {
-  if (delX <= 0 || delY <= 0) return;
+  if (delX <= 0 || delY <= 0 || viewport == nullptr) return;
   // Maps the pick region onto the whole clip volume: a translation, then a scale (floats, as GLU).
   glTranslatef((viewport[2] - 2 * (x - viewport[0])) / delX, (viewport[3] - 2 * (y - viewport[1])) / delY, 0);
   glScalef(viewport[2] / delX, viewport[3] / delY, 1.0);
@@ -143,6 +143,9 @@ FFC_GLU_EXPORT void GLAPIENTRY gluPickMatrix(GLdouble x, GLdouble y, GLdouble de
 FFC_GLU_EXPORT GLint GLAPIENTRY gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble *model,
                                            const GLdouble *proj, const GLint *view, GLdouble *winX,
                                            GLdouble *winY, GLdouble *winZ) {
+  // Missing arrays make the call fail as a singular matrix would (GLU itself would crash).
+  if (model == nullptr || proj == nullptr || view == nullptr || winX == nullptr || winY == nullptr || winZ == nullptr)
+    return GL_FALSE;
   const double object[4] = {objX, objY, objZ, 1.0};
   double eye[4], clip[4];
   transform(model, object, eye);
@@ -159,6 +162,8 @@ FFC_GLU_EXPORT GLint GLAPIENTRY gluProject(GLdouble objX, GLdouble objY, GLdoubl
 FFC_GLU_EXPORT GLint GLAPIENTRY gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble *model,
                                              const GLdouble *proj, const GLint *view, GLdouble *objX,
                                              GLdouble *objY, GLdouble *objZ) {
+  if (model == nullptr || proj == nullptr || view == nullptr || objX == nullptr || objY == nullptr || objZ == nullptr)
+    return GL_FALSE;
   double window[4] = {(winX - view[0]) / view[2], (winY - view[1]) / view[3], winZ, 1.0};
   for (int i = 0; i < 3; ++i) window[i] = window[i] * 2 - 1;  // to [-1, 1]
   double out[4];
@@ -173,6 +178,9 @@ FFC_GLU_EXPORT GLint GLAPIENTRY gluUnProject4(GLdouble winX, GLdouble winY, GLdo
                                               const GLdouble *model, const GLdouble *proj, const GLint *view,
                                               GLdouble nearVal, GLdouble farVal, GLdouble *objX,
                                               GLdouble *objY, GLdouble *objZ, GLdouble *objW) {
+  if (model == nullptr || proj == nullptr || view == nullptr || objX == nullptr || objY == nullptr ||
+      objZ == nullptr || objW == nullptr)
+    return GL_FALSE;
   double window[4] = {(winX - view[0]) / view[2], (winY - view[1]) / view[3],
                       (winZ - nearVal) / (farVal - nearVal), clipW};
   for (int i = 0; i < 3; ++i) window[i] = window[i] * 2 - 1;

@@ -31,7 +31,7 @@ void not_implemented(const char *name) {
   for (int i = 0; i < count; ++i)
     if (std::strcmp(reported[i], name) == 0) return;
   if (count < kMaxNames) reported[count++] = name;
-  std::fprintf(stderr, "ffcompat: %s is not implemented in ffcompat's libGLU; the call does nothing\n", name);
+  std::fprintf(stderr, "ffcompat: %s is not implemented by ffcompat's libGLU: it draws and builds nothing\n", name);
 }
 
 // The objects of gluNewTess / gluNewNurbsRenderer and their deletion.

@@ -6,6 +6,7 @@
 #include "shapes.h"
 
 #include <cstdio>
+#include <initializer_list>
 
 // Declared extern "C" by <GL/freeglut_std.h>; defined here, visible outside the library.
 #define FFC_GLUT_DATA __attribute__((visibility("default")))
@@ -20,6 +21,10 @@ FFC_GLUT_DATA void *glutBitmapTimesRoman24 = nullptr;
 FFC_GLUT_DATA void *glutBitmapHelvetica10 = nullptr;
 FFC_GLUT_DATA void *glutBitmapHelvetica12 = nullptr;
 FFC_GLUT_DATA void *glutBitmapHelvetica18 = nullptr;
+
+namespace ffc::glut {
+bool stroke_font_draw_join_dots = false;  // freeglut's default
+}  // namespace ffc::glut
 
 namespace {
 
@@ -81,12 +86,17 @@ const StrokeChar *stroke_char(const StrokeFont &font, int c) {
   return &font.chars[c];
 }
 
-void draw_strokes(const StrokeFont &font, const StrokeChar &ch) {
+// Each strip as a line strip, followed (with join dots, which only glutStrokeCharacter draws, as
+// in freeglut) by its vertices as points.
+void draw_strokes(const StrokeFont &font, const StrokeChar &ch, bool join_dots) {
   for (int s = 0; s < ch.strip_count; ++s) {
     const ffc::glut::StrokeStrip &strip = font.strips[ch.first_strip + s];
-    glBegin(GL_LINE_STRIP);
-    for (int v = 0; v < strip.count; ++v) glVertex2f(font.vertices[strip.first + v].x, font.vertices[strip.first + v].y);
-    glEnd();
+    for (GLenum mode : {GL_LINE_STRIP, GL_POINTS}) {
+      if (mode == GL_POINTS && !join_dots) break;
+      glBegin(mode);
+      for (int v = 0; v < strip.count; ++v) glVertex2f(font.vertices[strip.first + v].x, font.vertices[strip.first + v].y);
+      glEnd();
+    }
   }
 }
 
@@ -147,7 +157,7 @@ FFC_GLUT_EXPORT void FGAPIENTRY glutStrokeCharacter(void *font, int character) {
   const StrokeFont *f = stroke_font(font, "glutStrokeCharacter");
   const StrokeChar *ch = f == nullptr ? nullptr : stroke_char(*f, character);
   if (ch == nullptr) return;
-  draw_strokes(*f, *ch);
+  draw_strokes(*f, *ch, ffc::glut::stroke_font_draw_join_dots);
   glTranslatef(ch->right, 0.0, 0.0);
 }
 
@@ -161,7 +171,7 @@ FFC_GLUT_EXPORT void FGAPIENTRY glutStrokeString(void *font, const unsigned char
       glTranslatef(-x, -f->height, 0.0);
       x = 0.0f;
     } else if (const StrokeChar *ch = stroke_char(*f, *string)) {
-      draw_strokes(*f, *ch);
+      draw_strokes(*f, *ch, false);
       x += ch->right;
       glTranslatef(ch->right, 0.0, 0.0);
     }

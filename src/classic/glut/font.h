@@ -37,6 +37,10 @@ struct StrokeFont {
   const StrokeVertex *vertices;
 };
 
+// glutSetOption(GLUT_STROKE_FONT_DRAW_JOIN_DOTS, on) sets this (glutGet reads it): when on,
+// glutStrokeCharacter also draws each strip's vertices as points, filling the joints of wide lines.
+extern bool stroke_font_draw_join_dots;
+
 extern const BitmapFont kFixed8x13, kFixed9x15, kHelvetica10, kHelvetica12, kHelvetica18, kTimesRoman10,
     kTimesRoman24;
 extern const StrokeFont kStrokeRoman, kStrokeMonoRoman;
