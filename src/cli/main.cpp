@@ -11,6 +11,8 @@ void add_bench(CLI::App& app);  // bench.cpp
 void add_report(CLI::App& app);  // report.cpp
 void add_stress(CLI::App& app);  // stress.cpp
 void add_fuzz(CLI::App& app);    // fuzz.cpp
+void add_run(CLI::App& app);     // run.cpp
+void add_calls(CLI::App& app);   // calls.cpp
 }
 
 // Exit codes, the same for every command (README, "The command line"):
@@ -43,6 +45,8 @@ int main(int argc, char** argv) {
   ffc::cli::add_report(app);
   ffc::cli::add_stress(app);
   ffc::cli::add_fuzz(app);
+  ffc::cli::add_run(app);
+  ffc::cli::add_calls(app);
   // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
   std::string commands;
   bool known = false;

@@ -1,0 +1,172 @@
+// ffcompat_surface.h: a drawing surface on soft (ours, through backends::make) or mesa (OSMesa,
+// osmesa.h), each with its table of entry points for the exports.
+#include "ffcompat_surface.h"
+
+#include <GL/gl.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include "backends/backend.h"
+#include "image/image.h"
+#include "osmesa.h"
+#include "raster/raster.h"
+#include "state/context.h"
+#include "state/soft_gl.h"
+#include "table.h"
+
+struct ffcompat_surface {
+  std::string backend;
+  int width = 0, height = 0;
+  ffc::classic::Table table;
+  std::unique_ptr<ffc::backends::Backend> soft;  // one of these two
+  std::unique_ptr<ffc::classic::OsMesaSurface> mesa;
+};
+
+namespace {
+
+using ffc::classic::Table;
+
+// Every soft variant answers the same names: those of state::proc_address.
+const Table& soft_table() {
+  static const Table t = [] {
+    Table s;
+    for (int i = 0; i < ffc::classic::kEntryCount; ++i) s.fn[i] = ffc::state::proc_address(ffc::classic::kEntryNames[i]);
+    s.soft = true;
+    return s;
+  }();
+  return t;
+}
+
+std::string valid_names() {
+  std::string out;
+  bool mesa = false;
+  for (const std::string& n : ffc::backends::names()) {
+    out += (out.empty() ? "" : ", ") + n;
+    mesa = mesa || n == "mesa";
+  }
+  return mesa ? out : out + ", mesa";
+}
+
+bool valid_size(int width, int height) { return width > 0 && height > 0 && width <= 16384 && height <= 16384; }
+
+bool is_soft(const std::string& name) {
+  for (const std::string& n : ffc::backends::names())
+    if (n == name && n != "mesa") return true;
+  return false;
+}
+
+}  // namespace
+
+extern "C" {
+
+ffcompat_surface* ffcompat_surface_create(int width, int height) {
+  const char* env = std::getenv("FFCOMPAT_BACKEND");
+  const std::string name = env && *env ? env : "soft";
+  if (name != "mesa" && !is_soft(name)) {
+    std::fprintf(stderr, "ffcompat: unknown backend '%s' in FFCOMPAT_BACKEND (valid: %s)\n", name.c_str(),
+                 valid_names().c_str());
+    return nullptr;
+  }
+  if (!valid_size(width, height)) {
+    std::fprintf(stderr, "ffcompat: surface size %dx%d is outside 1..16384\n", width, height);
+    return nullptr;
+  }
+  std::unique_ptr<ffcompat_surface> s(new ffcompat_surface);
+  s->backend = name;
+  s->width = width, s->height = height;
+  try {
+    if (name == "mesa") {
+      std::string why;
+      s->mesa = ffc::classic::OsMesaSurface::make(width, height, why);
+      if (!s->mesa) {
+        std::fprintf(stderr, "ffcompat: the mesa backend is unavailable: %s\n", why.c_str());
+        return nullptr;
+      }
+      s->mesa->fill(s->table);
+    } else {
+      s->soft = ffc::backends::make(name);
+      s->soft->begin(width, height);
+      s->table = soft_table();
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ffcompat: cannot make a %s surface: %s\n", name.c_str(), e.what());
+    return nullptr;
+  }
+  s->table.backend = s->backend.c_str();
+  ffc::classic::g_current = &s->table;
+  return s.release();
+}
+
+void ffcompat_surface_make_current(ffcompat_surface* s) {
+  if (!s) {
+    ffc::classic::g_current = nullptr;
+    return;
+  }
+  try {
+    if (s->mesa ? s->mesa->make_current() : (s->soft->resume(), true)) {
+      ffc::classic::g_current = &s->table;
+      return;
+    }
+    std::fprintf(stderr, "ffcompat: cannot make the %s surface current\n", s->backend.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ffcompat: cannot make the %s surface current: %s\n", s->backend.c_str(), e.what());
+  }
+}
+
+void ffcompat_surface_read_rgba(ffcompat_surface* s, unsigned char* out) {
+  if (!s || !out) return;
+  if (s->mesa) return s->mesa->read_rgba(out);
+  ffc::image::Image img;
+  s->soft->read_into(img);
+  std::memcpy(out, img.rgba.data(), img.rgba.size());
+}
+
+int ffcompat_surface_resize(ffcompat_surface* s, int width, int height) {
+  if (!s || !valid_size(width, height)) return -1;
+  if (s->mesa) {
+    s->mesa->resize(width, height);
+  } else {
+    // The soft context is reached by making it current (the backend keeps it to itself); the
+    // context that was current before comes back after. A new Framebuffer is all a size is: the
+    // rasterizer reads the size from it at every draw.
+    ffc::state::Context* const previous = ffc::state::Context::current();
+    try {
+      s->soft->resume();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ffcompat: cannot resize the %s surface: %s\n", s->backend.c_str(), e.what());
+      return -1;
+    }
+    ffc::state::Context::current()->framebuffer() = ffc::raster::Framebuffer(width, height);
+    ffc::state::Context::make_current(previous);
+  }
+  s->width = width, s->height = height;
+  return 0;
+}
+
+int ffcompat_surface_width(const ffcompat_surface* s) { return s ? s->width : 0; }
+int ffcompat_surface_height(const ffcompat_surface* s) { return s ? s->height : 0; }
+const char* ffcompat_surface_backend(const ffcompat_surface* s) { return s ? s->backend.c_str() : ""; }
+
+void ffcompat_surface_destroy(ffcompat_surface* s) {
+  if (!s) return;
+  if (ffc::classic::g_current == &s->table) ffc::classic::g_current = nullptr;
+  delete s;
+}
+
+void* ffcompat_get_proc_address(const char* name) { return ffc::classic::export_address(name); }
+
+// The loader classic programs reach for extensions with (GLX's, declared in <GL/glx.h>): the same
+// answer, so a function of gl.h loaded by name still goes to the current surface, and anything
+// else is null rather than a symbol the program cannot find at startup.
+using GlxProc = void (*)();
+GlxProc glXGetProcAddressARB(const GLubyte* name) {
+  return reinterpret_cast<GlxProc>(ffc::classic::export_address(reinterpret_cast<const char*>(name)));
+}
+GlxProc glXGetProcAddress(const GLubyte* name) { return glXGetProcAddressARB(name); }
+
+}  // extern "C"
