@@ -137,6 +137,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("soft-line-smooth-not-modelled", state::kLineSmooth),
       drawn("soft-point-smooth-not-modelled", state::kPointSmooth),
       drawn("mesa-line-loop-wrap", state::kLineLoopWrap),
+      drawn("soft-texcoord-varying-not-modelled", state::kTexCoordVarying),
       // Row 44: the alpha of vertices sent before the glColor3, and so of the current colour too.
       {"mesa-color3-shrink-in-primitive", state::kColorShrinkInPrimitive,
        [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
@@ -161,7 +162,7 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kNonfiniteVertex) !=
                             soft.deviations.end();
        }},
-      // Row 49: what was drawn or fed back.
+      // Row 55: what was drawn or fed back.
       {"zero-clip-vertex", state::kZeroClipVertex,
        [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
          const bool kind = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels";
