@@ -119,6 +119,7 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
         break;
       }
       n = fog_values(pname, out, normalized);
+      if (n == 0) n = fragment_values(pname, out, normalized);
       if (n == 0) n = get_table_values(pname, out, normalized);
       if (n == 0) return error(GL_INVALID_ENUM), 0;
     }

@@ -291,17 +291,7 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
     // Feedback gets the raster position as a vertex after GL_DRAW_PIXEL_TOKEN (GL 2.1 section 5.3),
     // its texture coordinates the texture matrix's last column (the current ones are (0, 0, 0, 1)).
     if (!raster_pos_.valid) return;
-    note_texgen_in_feedback();
-    feedback_put(GL_DRAW_PIXEL_TOKEN);
-    const glm::dvec4& p = raster_pos_.window;
-    feedback_put(p.x), feedback_put(p.y);
-    if (feedback_type_ != GL_2D) feedback_put(p.z);
-    if (feedback_type_ == GL_4D_COLOR_TEXTURE) feedback_put(p.w);
-    if (feedback_type_ != GL_2D && feedback_type_ != GL_3D)
-      for (int k = 0; k < 4; ++k) feedback_put(raster_pos_.color[k]);
-    if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
-      for (int k = 0; k < 4; ++k) feedback_put(texture_f_.back().values()[3][k]);
-    return;
+    return feedback_raster_position(GL_DRAW_PIXEL_TOKEN);  // bitmap.cpp
   }
   Layout layout;
   if (!color_layout(format, layout) || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {

@@ -6,6 +6,7 @@
 
 #include "state/context.h"
 #include "state/gl_rules.h"
+#include "state/soft_gl_fragment.h"
 
 namespace ffc::state {
 namespace {
@@ -155,6 +156,7 @@ void* entry(F* f) {
 }  // namespace
 
 void* proc_address(const char* name) {
+  if (void* f = fragment_proc_address(name)) return f;  // soft_gl_fragment.cpp
 #define FFC_GL_FUNCTION(ret, fn, params) \
   if (std::strcmp(name, "gl" #fn) == 0) return entry(fn);
 #include "gl/gl_functions.inc"
