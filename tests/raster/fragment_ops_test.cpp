@@ -152,5 +152,53 @@ TEST(FragmentOps, BlendingBitExact) {
   EXPECT_EQ(inexact, 0) << first;
 }
 
+// glDrawPixels through the operations: a random image (bytes or floats, RGBA or RGB) at a random
+// raster position over a drawn background, under blending, the alpha test, the scissor box or
+// the masks. Bit for bit.
+void draw_pixels_case(int seed) {
+  std::mt19937 rng(seed);
+  glClearColor(0.2f, 0.4f, 0.6f, 0.8f), glClearDepth(0.5);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glShadeModel(GL_FLAT);  // a background whose pixels match Mesa's exactly
+  glEnable(GL_DEPTH_TEST), glDepthFunc(GL_ALWAYS);
+  primitives(rng, 0, 9);
+  glDisable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
+  switch (seed % 4) {
+    case 0:
+      glEnable(GL_BLEND);
+      glBlendFuncSeparate(kFactors[pick(rng, 15)], kFactors[pick(rng, 15)], kFactors[pick(rng, 15)], kFactors[pick(rng, 15)]);
+      glBlendColor(uni(rng, 0, 1), uni(rng, 0, 1), uni(rng, 0, 1), uni(rng, 0, 1));
+      break;
+    case 1: glEnable(GL_ALPHA_TEST), glAlphaFunc(GL_NEVER + GLenum(pick(rng, 8)), uni(rng, 0, 1)); break;
+    case 2: glEnable(GL_SCISSOR_TEST), glScissor(pick(rng, 30), pick(rng, 30), pick(rng, 30), pick(rng, 30)); break;
+    case 3:
+      glColorMask(GLboolean(pick(rng, 2)), GLboolean(pick(rng, 2)), GLboolean(pick(rng, 2)), GLboolean(pick(rng, 2)));
+      glEnable(GL_DEPTH_TEST), glDepthMask(GL_FALSE), glDepthFunc(GL_LEQUAL);
+      break;
+  }
+  const int w = 1 + pick(rng, 40), h = 1 + pick(rng, 40);
+  const bool floats = seed % 3 == 0, rgb = seed % 5 == 0;
+  std::vector<GLubyte> bytes(size_t(w) * h * 4);
+  std::vector<GLfloat> fl(bytes.size());
+  for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = GLubyte(pick(rng, 256)), fl[i] = uni(rng, -0.1f, 1.1f);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glRasterPos2f(uni(rng, -1, 0.5f), uni(rng, -1, 0.5f));
+  glDrawPixels(w, h, rgb ? GL_RGB : GL_RGBA, floats ? GL_FLOAT : GL_UNSIGNED_BYTE,
+               floats ? static_cast<const void*>(fl.data()) : bytes.data());
+  glDisable(GL_DEPTH_TEST), glDepthMask(GL_TRUE);
+  glColorMask(1, 1, 1, 1);
+}
+
+TEST(FragmentOps, DrawPixelsBitExact) {
+  int inexact = 0;
+  std::string first;
+  for (int seed = 0; seed < 160; ++seed) {
+    const Difference d = run_both(kSize, seed, draw_pixels_case);
+    inexact += d.inexact;
+    if (d.inexact && first.empty()) first = "case " + std::to_string(seed) + ": " + std::to_string(d.inexact) + " pixels";
+  }
+  EXPECT_EQ(inexact, 0) << first;
+}
+
 }  // namespace
 }  // namespace ffc
