@@ -1,4 +1,5 @@
 #include "raster/raster.h"
+#include "raster/fragment.h"
 #include "raster/reference.h"
 #include "raster/row_loop.h"
 #include "pool/workers.h"
@@ -345,15 +346,15 @@ namespace {
 
 void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c, const State& s) {
   if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return;
+  if (!detail::scissor_pass(s.ops, x, y) || !detail::alpha_pass(s.ops, c.a)) return;
   const size_t i = size_t(y) * fb.width + x;
   const uint32_t zi = detail::depth24(float(z));  // converted as a triangle's
   if (s.depth_test) {
     if (!detail::depth_pass(s.depth_func, zi, fb.depth[i])) return;
-    fb.depth[i] = zi;
+    if (s.ops.depth_write) fb.depth[i] = zi;
   }
-  uint8_t* p = &fb.color[i * 4];
   if (!std::isfinite(c.r + c.g + c.b + c.a)) g_nonfinite_fragments.fetch_add(1, std::memory_order_relaxed);
-  for (int k = 0; k < 4; ++k) p[k] = to_unorm8(c[k]);
+  detail::write_color(s.ops, &fb.color[i * 4], c);
 }
 
 // Snapped to 1/256 pixel, as llvmpipe's 8 subpixel bits; nearbyint rounds half to even.
@@ -402,6 +403,7 @@ bool setup(const std::array<SetupVertex, 3>& sv, const State& s, Triangle& t) {
 
 void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
                     pool::Workers& workers) {
+  ++fb.writes;
   if (reference_rasterizer() && !s.fragment_ops()) {
     for (size_t i = 0; i < count; ++i)
       for (const Triangle& t : *lists[i]) draw_reference(fb, t, s);
@@ -420,6 +422,10 @@ void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, 
         Triangle c = t;  // clip the box to the framebuffer
         c.xmin = std::max(c.xmin, 0), c.ymin = std::max(c.ymin, 0);
         c.xmax = std::min(c.xmax, fb.width - 1), c.ymax = std::min(c.ymax, fb.height - 1);
+        if (s.ops.scissor) {  // and to the scissor box
+          c.xmin = std::max(c.xmin, s.ops.scissor_x0), c.ymin = std::max(c.ymin, s.ops.scissor_y0);
+          c.xmax = std::min(c.xmax, s.ops.scissor_x1 - 1), c.ymax = std::min(c.ymax, s.ops.scissor_y1 - 1);
+        }
         if (c.xmin > c.xmax || c.ymin > c.ymax) continue;
         // Fog and polygon offset are per-fragment operations only the scalar loop has.
         if (s.fragment_ops()) detail::rasterize_fragment_ops(fb, c, s, mine);
@@ -466,7 +472,12 @@ glm::dvec4 summed(const glm::dvec4& c, const glm::dvec4& sec, const State& s) {
 
 }  // namespace
 
+void draw_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& color, const State& s) {
+  write_fragment(fb, x, y, z, color, s);
+}
+
 void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s) {
+  ++fb.writes;
   // GL 2.1 section 3.3.1 (non-antialiased points), as llvmpipe's legacy-point path computes it in
   // 1/256 pixel, rows counted down: size rounded to a whole number of pixels, at least 1 (half
   // rounds down: (256 size + 127) truncated); the square's first column and row from the snapped
@@ -489,6 +500,7 @@ void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s) {
 }
 
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s) {
+  ++fb.writes;
   // llvmpipe's lp_setup_line.c, non-rectangular (GL legacy) lines: a parallelogram `width` pixels
   // across the major axis whose two ends are moved by half a pixel along it where the
   // diamond-exit rule (GL 2.1 section 3.4.1) wants the end pixel and plain coverage would not
@@ -640,10 +652,29 @@ void clear_band(Framebuffer& fb, const ClearRequest& c, int b) {
     std::memcpy(p, v, 4);
     for (size_t done = 4; done < n * 4; done *= 2) std::memcpy(p + done, p, std::min(done, n * 4 - done));
   }
-  if (c.depth) std::fill_n(&fb.depth[first], n, uint32_t(std::clamp(c.clear_depth, 0.0, 1.0) * 0xFFFFFF + 0.5));
+  if (c.depth) std::fill_n(&fb.depth[first], n, c.depth24());
+}
+
+void clear_masked(Framebuffer& fb, const ClearRequest& c, const State::Ops& ops) {
+  ++fb.writes;
+  const int x0 = ops.scissor ? std::max(ops.scissor_x0, 0) : 0, y0 = ops.scissor ? std::max(ops.scissor_y0, 0) : 0;
+  const int x1 = ops.scissor ? std::min(ops.scissor_x1, fb.width) : fb.width;
+  const int y1 = ops.scissor ? std::min(ops.scissor_y1, fb.height) : fb.height;
+  const glm::vec4& cc = c.clear_color;
+  const uint8_t v[4] = {to_unorm8(cc.r), to_unorm8(cc.g), to_unorm8(cc.b), to_unorm8(cc.a)};
+  const uint32_t z = c.depth24();
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const size_t i = size_t(y) * fb.width + x;
+      if (c.color)
+        for (int k = 0; k < 4; ++k)
+          if (ops.color_mask >> k & 1) fb.color[i * 4 + k] = v[k];
+      if (c.depth && ops.depth_write) fb.depth[i] = z;
+    }
 }
 
 void clear(Framebuffer& fb, const ClearRequest& c, pool::Workers& workers) {
+  ++fb.writes;
   workers.run([&](int b) { clear_band(fb, c, b); }, (fb.height + kBandRows - 1) / kBandRows);  // a band a share
 }
 

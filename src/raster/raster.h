@@ -33,6 +33,9 @@ struct Framebuffer {
   int width = 0, height = 0;
   std::vector<uint8_t> color;   // RGBA8
   std::vector<uint32_t> depth;  // 24-bit
+  // Counts the draws and clears that wrote the buffer (not glBitmap's fragments): glBitmap tells
+  // by it whether anything else drew since the last bitmap (state/bitmap.cpp).
+  uint64_t writes = 0;
   // A new buffer's contents are undefined in GL; llvmpipe's start at 0, colour and depth alike, and
   // so do ours (a program that depth-tests without clearing then draws what it draws on Mesa).
   Framebuffer(int w, int h) : width(w), height(h), color(size_t(w) * h * 4, 0), depth(size_t(w) * h, 0) {}
@@ -63,8 +66,25 @@ struct State {
   // (setup, Triangle::offset).
   bool offset_fill = false;
   float offset_factor = 0, offset_units = 0;
-  // Fog or polygon offset: triangles take the scalar row loop (row_loop.h rasterize_fragment_ops).
-  bool fragment_ops() const { return fog || offset_fill; }
+  // The per-fragment operations of GL 2.1 chapter 4.1 after coverage, in their order: scissor,
+  // alpha test, depth (written only under depth_write), blending, colour mask (fragment.h).
+  struct Ops {
+    bool scissor = false;
+    int scissor_x0 = 0, scissor_y0 = 0, scissor_x1 = 0, scissor_y1 = 0;  // [x0, x1) x [y0, y1), GL rows
+    bool alpha_test = false;
+    GLenum alpha_func = GL_ALWAYS;
+    uint8_t alpha_ref = 0;  // the reference in 8 bits: llvmpipe compares the buffer's unorm8 values
+    bool depth_write = true;
+    bool blend = false;
+    GLenum src_rgb = GL_ONE, dst_rgb = GL_ZERO, src_alpha = GL_ONE, dst_alpha = GL_ZERO;
+    GLenum eq_rgb = GL_FUNC_ADD, eq_alpha = GL_FUNC_ADD;
+    uint8_t blend_color[4] = {0, 0, 0, 0};
+    unsigned color_mask = 0xF;  // bit k: channel k (r, g, b, a) written
+    bool any() const { return scissor || alpha_test || !depth_write || blend || color_mask != 0xF; }
+  } ops;
+  // Fog, polygon offset or any of ops: triangles take the scalar row loop
+  // (row_loop.h rasterize_fragment_ops).
+  bool fragment_ops() const { return fog || offset_fill || ops.any(); }
 };
 
 // A vector of at most N elements kept in place: clipping makes at most nine vertices of a
@@ -190,6 +210,9 @@ void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, 
 // (lp_setup_line.c, lp_setup_point.c). Colours: the line's interpolated, the point's its own.
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
 void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s);
+// One fragment at pixel (x, y) (GL rows), window depth z, through the per-fragment operations of
+// s (glBitmap's fragments); outside the framebuffer, none.
+void draw_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& color, const State& s);
 // glClear's request: which buffers, to what. A context keeps it until something reads or draws:
 // the triangle-list path has each thread clear the bands it is about to draw.
 struct ClearRequest {
@@ -197,9 +220,13 @@ struct ClearRequest {
   glm::vec4 clear_color{0};
   double clear_depth = 1;
   bool pending() const { return color || depth; }
+  uint32_t depth24() const { return uint32_t((clear_depth < 0 ? 0 : clear_depth > 1 ? 1 : clear_depth) * 0xFFFFFF + 0.5); }
 };
 void clear(Framebuffer& fb, const ClearRequest& c, pool::Workers& workers);
 void clear_band(Framebuffer& fb, const ClearRequest& c, int band);  // rows [64 band, 64 band + 64)
+// glClear under a colour or depth mask or the scissor test (GL 2.1 section 4.2.3): the masked
+// channels and what lies outside the box are kept. Not banded: such clears are rare.
+void clear_masked(Framebuffer& fb, const ClearRequest& c, const State::Ops& ops);
 
 // Fragments written from a non-finite colour (a NaN or an infinity in any channel before the
 // clamp), counted process-wide for the stress suite: reset, draw, read.

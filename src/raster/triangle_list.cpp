@@ -287,6 +287,7 @@ void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const 
 
 void draw_triangle_list(Framebuffer& fb, const State& s, const ListVertices& vs, const uint32_t* idx,
                         size_t triangles, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
+  ++fb.writes;
   if (triangles == 0 && clear.pending()) raster::clear(fb, clear, workers);
   constexpr size_t kPart = size_t(1) << 30;  // binned triangle numbers have 31 bits
   for (size_t done = 0; done < triangles; done += kPart)

@@ -21,6 +21,7 @@
 #include "state/display_list.h"
 #include "state/float_matrix.h"
 #include "state/selection.h"
+#include "state/fragment.h"
 #include "raster/raster.h"
 #include "raster/triangle_list.h"
 
@@ -455,6 +456,66 @@ class Context {
   bool edge_flag_ = true;
   std::map<GLenum, GLenum> hints_;
   ClientArray texcoord_array_{false, 4, GL_FLOAT, 0, nullptr};
+
+  // --- Per-fragment operations, glBitmap and the attribute stacks (the fragment helper's block) ---
+  // fragment.cpp: scissor, alpha test, blending, the write masks and what raster::State gets of
+  // them; bitmap.cpp: glBitmap; attrib.cpp: glPushAttrib / glPopAttrib and the client's.
+ public:
+  void AlphaFunc(GLenum func, GLfloat ref);
+  void BlendFuncSeparate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha);
+  void BlendEquationSeparate(GLenum rgb, GLenum alpha);
+  void BlendColor(float r, float g, float b, float a);
+  void ColorMask(bool r, bool g, bool b, bool a);
+  void DepthMask(bool on);
+  void Scissor(GLint x, GLint y, GLsizei w, GLsizei h);
+  // packed: rows of whole bytes, most significant bit first, as pack_bitmap makes them (a display
+  // list's copy), whatever the GL_UNPACK_* state; otherwise unpacked by that state.
+  void Bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove, float ymove, const GLubyte* bits,
+              bool packed = false);
+  std::vector<GLubyte> pack_bitmap(GLsizei w, GLsizei h, const GLubyte* bits) const;
+
+ private:
+  struct BitmapLayout {  // bitmap.cpp
+    size_t row, skip_rows, skip_bits;
+    bool lsb_first;
+    bool bit(const GLubyte* bits, GLsizei i, GLsizei j) const;  // bit i of row j
+  };
+  BitmapLayout bitmap_layout(GLsizei w, bool packed) const;
+
+ public:
+  void PushAttrib(GLbitfield mask);
+  void PopAttrib();
+  void PushClientAttrib(GLbitfield mask);
+  void PopClientAttrib();
+
+ private:
+  FragmentState frag_;
+  bool* fragment_capability(GLenum cap);  // GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_BLEND; null for others
+  int fragment_values(GLenum pname, GLdouble* out, int& normalized);  // 0 for a name not its own
+  void fragment_raster_state(raster::State& rs) const;
+  bool fragment_ops_default() const;  // none of frag_'s operations changes a fragment: fast paths allowed
+  bool clear_with_fragment_ops(GLbitfield mask);  // glClear now, under masks and scissor; false: none apply
+  glm::ivec4 scissor_box() const;
+  struct AttribEntry;  // attrib.cpp
+  struct ClientAttribEntry;
+  std::vector<std::shared_ptr<AttribEntry>> attrib_stack_;
+  std::vector<std::shared_ptr<ClientAttribEntry>> client_attrib_stack_;
+  static constexpr size_t kMaxAttribStackDepth = 16;  // Mesa's MAX_ATTRIB_STACK_DEPTH and client's
+  // Mesa's bitmap cache (st_cb_bitmap.c): consecutive glBitmaps of one colour and depth are ORed
+  // into one 512 x 32 bitmap drawn once, so a pixel two glyphs share is one fragment (bitmap.cpp).
+  struct BitmapRun {
+    bool active = false;
+    uint64_t writes = 0;  // the framebuffer's count when the run last drew
+    glm::dvec4 color{0};
+    double z = 0;
+    raster::State::Ops ops;
+    bool depth_test = false;
+    GLenum depth_func = GL_LESS;
+    int xpos = 0, ypos = 0;      // the cache's lower-left corner in the window
+    std::vector<uint8_t> drawn;  // 512 x 32: set where the run has made a fragment
+  } bitmap_run_;
+  uint8_t* bitmap_cache(int x0, int y0, int w, int h, const raster::State& rs);
+  void feedback_raster_position(GLenum token);  // GL_BITMAP_TOKEN or GL_DRAW_PIXEL_TOKEN and the position
 };
 
 }  // namespace ffc::state

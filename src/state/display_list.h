@@ -19,6 +19,7 @@
 #include <cstring>
 #include <glm/glm.hpp>
 #include <map>
+#include <memory>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -31,15 +32,25 @@ struct Floats {
   T v[N];
 };
 
+// Bytes a list keeps for one of its commands (a glBitmap's bits, unpacked when compiled): recorded
+// by address, alive as long as the list.
+struct PackedBits {
+  const GLubyte* data;
+};
+
 class DisplayList {
  public:
+  PackedBits keep(std::vector<GLubyte> bytes) {
+    kept_.push_back(std::make_shared<std::vector<GLubyte>>(std::move(bytes)));
+    return {kept_.back()->empty() ? nullptr : kept_.back()->data()};
+  }
   template <auto Fn, typename... A>
   void record(const A&... a) {
     put(&Command<Fn>::replay);
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(); }
+  void clear() { bytes_.clear(), kept_.clear(); }
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -74,6 +85,7 @@ class DisplayList {
     }
   };
   std::vector<unsigned char> bytes_;
+  std::vector<std::shared_ptr<const std::vector<GLubyte>>> kept_;
 };
 
 // The lists of a context and the one being compiled (GL 2.1 table 6.39's state).

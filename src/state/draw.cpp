@@ -167,7 +167,7 @@ bool Context::triangle_list_path(GLenum mode) const {
   // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the
   // triangle list's kernels have neither a fog coordinate nor a depth offset.
   return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float &&
-         !fog_ && !offset_fill_;
+         !fog_ && !offset_fill_ && fragment_ops_default();
 }
 
 void Context::draw_triangle_list(const uint32_t* indices, size_t triangles) {

@@ -121,6 +121,7 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
       }
       n = attribute_values(pname, out);  // before fog_values, which answers GL_FOG_HINT's default
       if (n == 0) n = fog_values(pname, out, normalized);
+      if (n == 0) n = fragment_values(pname, out, normalized);
       if (n == 0) n = list_values(pname, out);
       if (n == 0) n = select_values(pname, out);
       if (n == 0) n = get_table_values(pname, out, normalized);

@@ -297,17 +297,7 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
     // Feedback gets the raster position as a vertex after GL_DRAW_PIXEL_TOKEN (GL 2.1 section 5.3),
     // its texture coordinates the texture matrix's last column (the current ones are (0, 0, 0, 1)).
     if (!raster_pos_.valid) return;
-    note_texgen_in_feedback();
-    feedback_put(GL_DRAW_PIXEL_TOKEN);
-    const glm::dvec4& p = raster_pos_.window;
-    feedback_put(p.x), feedback_put(p.y);
-    if (feedback_type_ != GL_2D) feedback_put(p.z);
-    if (feedback_type_ == GL_4D_COLOR_TEXTURE) feedback_put(p.w);
-    if (feedback_type_ != GL_2D && feedback_type_ != GL_3D)
-      for (int k = 0; k < 4; ++k) feedback_put(raster_pos_.color[k]);
-    if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
-      for (int k = 0; k < 4; ++k) feedback_put(texture_f_.back().values()[3][k]);
-    return;
+    return feedback_raster_position(GL_DRAW_PIXEL_TOKEN);  // bitmap.cpp
   }
   Layout layout;
   if (!color_layout(format, layout) || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) {
@@ -347,24 +337,33 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
   // (i, j); it makes the fragment whose centre lies inside.
   const int x0 = int(std::ceil(raster_pos_.window.x - 0.5)), y0 = int(std::ceil(raster_pos_.window.y - 0.5));
   const uint32_t z = raster::detail::depth24(float(raster_pos_.window.z));  // as llvmpipe converts depth
+  auto color_at = [&](GLsizei i, GLsizei j) {
+    const uint8_t* p = base + size_t(j) * row + size_t(i) * pixel;
+    glm::dvec4 c(0, 0, 0, 1);
+    for (int k = 0; k < layout.n; ++k) {
+      const double v = component(p, k);
+      if (layout.channel[k] < 0) c.r = c.g = c.b = v;
+      else c[layout.channel[k]] = v;
+    }
+    return c;
+  };
+  const raster::State rs = raster_state();
   for (GLsizei j = 0; j < h; ++j) {
     const int fy = y0 + j;
     if (fy < 0 || fy >= fb_.height) continue;
     for (GLsizei i = 0; i < w; ++i) {
       const int fx = x0 + i;
       if (fx < 0 || fx >= fb_.width) continue;
+      if (rs.ops.any()) {  // scissor, alpha test, masks, blending (fragment.cpp) on each pixel
+        raster::draw_fragment(fb_, fx, fy, raster_pos_.window.z, color_at(i, j), rs);
+        continue;
+      }
       const size_t at = size_t(fy) * size_t(fb_.width) + size_t(fx);
       if (depth_test_) {
         if (!raster::detail::depth_pass(depth_func_, z, fb_.depth[at])) continue;
         fb_.depth[at] = z;
       }
-      const uint8_t* p = base + size_t(j) * row + size_t(i) * pixel;
-      glm::dvec4 c(0, 0, 0, 1);
-      for (int k = 0; k < layout.n; ++k) {
-        const double v = component(p, k);
-        if (layout.channel[k] < 0) c.r = c.g = c.b = v;
-        else c[layout.channel[k]] = v;
-      }
+      const glm::dvec4 c = color_at(i, j);
       for (int k = 0; k < 4; ++k) {
         // To 8 bits as Mesa's float_to_unorm: in float, halves to even; NaN to 0.
         const float v = float(c[k] > 0 ? (c[k] < 1 ? c[k] : 1) : 0);

@@ -58,6 +58,7 @@ raster::State Context::raster_state() const {
   rs.line_width = line_width_;
   rs.point_size = point_size_;
   fog_raster_state(rs);
+  fragment_raster_state(rs);
   return rs;
 }
 

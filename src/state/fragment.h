@@ -1,0 +1,25 @@
+// The state of the per-fragment operations (GL 2.1 sections 4.1.2 to 4.1.8 and 4.2.2): scissor,
+// alpha test, blending, the depth and colour write masks, with GL's defaults (tables 6.20 to
+// 6.22). One struct, so that glPushAttrib can keep it whole (attrib.cpp).
+#pragma once
+#include <GL/gl.h>
+
+#include <glm/glm.hpp>
+
+namespace ffc::state {
+
+struct FragmentState {
+  bool scissor_test = false, alpha_test = false, blend = false;
+  // The scissor box; a width of -1: not set yet, the window's size (Mesa sets the box when the
+  // context is first made current).
+  glm::ivec4 scissor_box{0, 0, -1, -1};
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0;  // clamped to [0, 1], as Mesa keeps and reports it for a fixed-point buffer
+  GLenum src_rgb = GL_ONE, dst_rgb = GL_ZERO, src_alpha = GL_ONE, dst_alpha = GL_ZERO;
+  GLenum eq_rgb = GL_FUNC_ADD, eq_alpha = GL_FUNC_ADD;
+  glm::vec4 blend_color{0};  // clamped to [0, 1], as the alpha reference
+  bool color_mask[4] = {true, true, true, true};
+  bool depth_mask = true;
+};
+
+}  // namespace ffc::state
