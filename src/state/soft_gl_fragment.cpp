@@ -24,6 +24,7 @@ void APIENTRY BlendFuncSeparate(GLenum sr, GLenum dr, GLenum sa, GLenum da) { FW
 void APIENTRY ColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) { FWD(ColorMask(r, g, b, a)); }
 void APIENTRY DepthMask(GLboolean on) { FWD(DepthMask(on)); }
 void APIENTRY Scissor(GLint x, GLint y, GLsizei w, GLsizei h) { FWD(Scissor(x, y, w, h)); }
+void APIENTRY LineStipple(GLint factor, GLushort pattern) { FWD(LineStipple(factor, pattern)); }
 void APIENTRY Bitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* b) {
   FWD(Bitmap(w, h, xo, yo, xm, ym, b));
 }
@@ -48,6 +49,7 @@ void* fragment_proc_address(const char* name) {
       {"glColorMask", reinterpret_cast<void*>(&ColorMask)},
       {"glDepthMask", reinterpret_cast<void*>(&DepthMask)},
       {"glScissor", reinterpret_cast<void*>(&Scissor)},
+      {"glLineStipple", reinterpret_cast<void*>(&LineStipple)},
       {"glBitmap", reinterpret_cast<void*>(&Bitmap)},
       {"glPushAttrib", reinterpret_cast<void*>(&PushAttrib)},
       {"glPopAttrib", reinterpret_cast<void*>(&PopAttrib)},

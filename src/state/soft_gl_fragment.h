@@ -15,6 +15,7 @@ void APIENTRY BlendFuncSeparate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha
 void APIENTRY ColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a);
 void APIENTRY DepthMask(GLboolean on);
 void APIENTRY Scissor(GLint x, GLint y, GLsizei w, GLsizei h);
+void APIENTRY LineStipple(GLint factor, GLushort pattern);
 void APIENTRY Bitmap(GLsizei w, GLsizei h, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
                      const GLubyte* bitmap);
 void APIENTRY PushAttrib(GLbitfield mask);
