@@ -12,8 +12,6 @@
 namespace ffc {
 namespace {
 
-using picture_test::Difference;
-using picture_test::run_both;
 
 constexpr int kSize = 64;
 
@@ -40,16 +38,10 @@ void stipple_case(int seed) {
 
 TEST(LineStipple, PicturesMatchMesa) {
   constexpr int kCases = 300;
-  int far = 0, inexact = 0, drawn = 0;
-  std::string first;
-  for (int seed = 0; seed < kCases; ++seed) {
-    const Difference d = run_both(kSize, seed, stipple_case);
-    far += d.far > 0, inexact += d.inexact, drawn += d.drawn;
-    if (d.far && first.empty()) first = d.first + " (" + std::to_string(d.far) + " pixels)";
-  }
-  EXPECT_EQ(far, 0) << far << " of " << kCases << " cases differ by more than 1; first: " << first;
-  EXPECT_GT(drawn, kCases * 40);
-  EXPECT_EQ(inexact, 0) << "pixels not identical (measured: none)";
+  const picture_test::Tally t = picture_test::run_cases(kSize, kCases, stipple_case);
+  EXPECT_EQ(t.far_cases, 0) << t.far_cases << " of " << kCases << " cases differ by more than 1; first: " << t.first;
+  EXPECT_EQ(t.inexact, 0) << "pixels not identical (measured: none): " << t.first;
+  EXPECT_GT(t.drawn, kCases * 40);
 }
 
 }  // namespace
