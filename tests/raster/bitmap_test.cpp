@@ -15,7 +15,6 @@
 namespace ffc {
 namespace {
 
-
 constexpr int kSize = 64;
 
 int pick(std::mt19937& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }

@@ -16,7 +16,6 @@
 namespace ffc {
 namespace {
 
-
 constexpr int kSize = 48;
 
 const GLenum kFactors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,

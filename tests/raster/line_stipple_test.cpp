@@ -12,7 +12,6 @@
 namespace ffc {
 namespace {
 
-
 constexpr int kSize = 64;
 
 float uni(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
