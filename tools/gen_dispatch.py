@@ -103,6 +103,7 @@ void BlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha
 void ColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha)
 void DepthMask(GLboolean flag)
 void Scissor(GLint x, GLint y, GLsizei width, GLsizei height)
+void LineStipple(GLint factor, GLushort pattern)
 void Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove, const GLubyte *bitmap)
 void PushAttrib(GLbitfield mask)
 void PopAttrib(void)

@@ -499,7 +499,47 @@ void draw_point(Framebuffer& fb, const WindowVertex& v, const State& s) {
       write_fragment(fb, int(x), fb.height - 1 - int(yd), v.pos.z, col, s);
 }
 
+namespace {
+void draw_solid_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s);
+
+// A point of the line a-b at t, as the draw module's stipple stage makes one (draw_pipe_stipple.c
+// screen_interp): every attribute, window position included, linear in t, in float.
+WindowVertex along(const WindowVertex& a, const WindowVertex& b, float t) {
+  auto lerp = [t](double u, double v) { return double(float(u) + t * (float(v) - float(u))); };
+  WindowVertex w = a;
+  w.fx = float(lerp(a.fx, b.fx)), w.y_down = float(lerp(a.y_down, b.y_down));
+  w.pos = {w.fx, lerp(a.pos.y, b.pos.y), lerp(a.pos.z, b.pos.z)};
+  w.inv_w = lerp(a.inv_w, b.inv_w);
+  for (int k = 0; k < 4; ++k) w.color[k] = lerp(a.color[k], b.color[k]), w.sec[k] = lerp(a.sec[k], b.sec[k]);
+  w.fog = lerp(a.fog, b.fog);
+  return w;
+}
+}  // namespace
+
+// The stipple as Mesa's draw module applies it before llvmpipe's line rasterizer: one pattern bit
+// per pixel of the line's length along its major axis (ceil of the larger of |dx|, |dy|), the
+// counter running on from the previous segment of a strip; each run of set bits drawn as a line
+// of its own between the points at start / length and end / length.
 void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s) {
+  if (!s.line_stipple || !s.stipple_counter) return draw_solid_line(fb, a, b, s);
+  ++fb.writes;
+  const float length = std::max(std::fabs(a.fx - b.fx), std::fabs(a.y_down - b.y_down));
+  const int n = std::isfinite(length) ? int(std::ceil(length)) : 0;
+  int& counter = *s.stipple_counter;
+  bool on = false;
+  float start = 0;
+  for (int i = 0; i < n; ++i, ++counter) {
+    const bool bit = (s.stipple_pattern >> ((counter / s.stipple_factor) & 15)) & 1;
+    if (bit == on) continue;
+    if (on && start != float(i)) draw_solid_line(fb, start > 0 ? along(a, b, start / length) : a, along(a, b, float(i) / length), s);
+    if (!on) start = float(i);
+    on = bit;
+  }
+  if (on && start < length) draw_solid_line(fb, start > 0 ? along(a, b, start / length) : a, b, s);
+}
+
+namespace {
+void draw_solid_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, const State& s) {
   ++fb.writes;
   // llvmpipe's lp_setup_line.c, non-rectangular (GL legacy) lines: a parallelogram `width` pixels
   // across the major axis whose two ends are moved by half a pixel along it where the
@@ -641,6 +681,8 @@ void draw_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex& b, co
       write_fragment(fb, int(xp), fb.height - 1 - int(yd), detail::depth_at(zplane, 1, X, Y), col, s);
     }
 }
+
+}  // namespace
 
 void clear_band(Framebuffer& fb, const ClearRequest& c, int b) {
   const size_t first = size_t(b) * kBandRows * fb.width;

@@ -82,6 +82,12 @@ struct State {
     unsigned color_mask = 0xF;  // bit k: channel k (r, g, b, a) written
     bool any() const { return scissor || alpha_test || !depth_write || blend || color_mask != 0xF; }
   } ops;
+  // GL_LINE_STIPPLE (GL 2.1 section 3.4.2): lines cut into the pattern's runs (draw_line), the
+  // pattern's counter kept by the context across a strip's segments (reset_stipple).
+  bool line_stipple = false;
+  int stipple_factor = 1;
+  uint16_t stipple_pattern = 0xFFFF;
+  int* stipple_counter = nullptr;
   // Fog, polygon offset or any of ops: triangles take the scalar row loop
   // (row_loop.h rasterize_fragment_ops).
   bool fragment_ops() const { return fog || offset_fill || ops.any(); }
@@ -205,6 +211,11 @@ bool setup(const std::array<SetupVertex, 3>& v, const State& s, Triangle& out);
 // written by one thread, in primitive order, so the picture does not depend on their number.
 void draw_triangles(Framebuffer& fb, const std::vector<Triangle>* const* lists, size_t count, const State& s,
                     pool::Workers& workers);  // the `count` lists one after the other
+
+// A new line (each of GL_LINES, the first of a strip) starts the stipple pattern again.
+inline void reset_stipple(const State& s) {
+  if (s.stipple_counter) *s.stipple_counter = 0;
+}
 
 // A line of width s.line_width and a point of size s.point_size as llvmpipe rasterizes them
 // (lp_setup_line.c, lp_setup_point.c). Colours: the line's interpolated, the point's its own.

@@ -52,8 +52,8 @@ void with_depth_mode(const State& s, F&& f) {
   }
 }
 
-// Triangles under fog or polygon offset (State::fragment_ops): the pixels rasterize() covers,
-// one by one, each with its fog and depth offset (fragment_ops.cpp).
+// Triangles under fog, polygon offset or a per-fragment operation (State::fragment_ops): the
+// pixels rasterize() covers, one by one, each through them (fragment_ops.cpp).
 void rasterize_fragment_ops(Framebuffer& fb, const Triangle& t, const State& s, const Bands& bands);
 
 // First and last k with e0 + a k >= thr, for k in [lo, hi]; empty when first > last.

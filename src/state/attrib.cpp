@@ -103,6 +103,7 @@ void Context::PopAttrib() {
     // takes the current colour, as glEnable does.
     if (color_material_ && !was_color_material) update_color_material();
     frag_.scissor_test = e->frag.scissor_test, frag_.alpha_test = e->frag.alpha_test, frag_.blend = e->frag.blend;
+    frag_.line_stipple = e->frag.line_stipple;
     std::map<GLenum, bool> kept;  // the client arrays' switches stay
     for (const auto& [name, on] : other_enables_)
       if (client_array(name)) kept[name] = on;
@@ -111,10 +112,11 @@ void Context::PopAttrib() {
     other_enables_ = kept;
   }
   if (m & GL_COLOR_BUFFER_BIT) {
-    const bool scissor = frag_.scissor_test, depth_mask = frag_.depth_mask;
-    const glm::ivec4 box = frag_.scissor_box;
-    frag_ = e->frag;  // all but the scissor's and the depth buffer's
-    frag_.scissor_test = scissor, frag_.scissor_box = box, frag_.depth_mask = depth_mask;
+    const FragmentState now = frag_;
+    frag_ = e->frag;  // all but the scissor's, the depth buffer's and the line's
+    frag_.scissor_test = now.scissor_test, frag_.scissor_box = now.scissor_box, frag_.depth_mask = now.depth_mask;
+    frag_.line_stipple = now.line_stipple, frag_.stipple_factor = now.stipple_factor;
+    frag_.stipple_pattern = now.stipple_pattern;
     clear_color_ = e->clear_color;
     restore_enables({GL_DITHER, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP});
   }
@@ -136,7 +138,9 @@ void Context::PopAttrib() {
   }
   if (m & GL_LINE_BIT) {
     line_width_ = e->line_width;
-    restore_enables({GL_LINE_SMOOTH, GL_LINE_STIPPLE});
+    frag_.line_stipple = e->frag.line_stipple;
+    frag_.stipple_factor = e->frag.stipple_factor, frag_.stipple_pattern = e->frag.stipple_pattern;
+    restore_enables({GL_LINE_SMOOTH});
   }
   if (m & GL_POINT_BIT) {
     point_size_ = e->point_size;

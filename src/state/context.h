@@ -468,6 +468,7 @@ class Context {
   void ColorMask(bool r, bool g, bool b, bool a);
   void DepthMask(bool on);
   void Scissor(GLint x, GLint y, GLsizei w, GLsizei h);
+  void LineStipple(GLint factor, GLushort pattern);
   // packed: rows of whole bytes, most significant bit first, as pack_bitmap makes them (a display
   // list's copy), whatever the GL_UNPACK_* state; otherwise unpacked by that state.
   void Bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove, float ymove, const GLubyte* bits,
@@ -490,7 +491,8 @@ class Context {
 
  private:
   FragmentState frag_;
-  bool* fragment_capability(GLenum cap);  // GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_BLEND; null for others
+  mutable int stipple_counter_ = 0;  // the line stipple's position, run on along a strip (raster.h)
+  bool* fragment_capability(GLenum cap);  // GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_BLEND, GL_LINE_STIPPLE; else null
   int fragment_values(GLenum pname, GLdouble* out, int& normalized);  // 0 for a name not its own
   void fragment_raster_state(raster::State& rs) const;
   bool fragment_ops_default() const;  // none of frag_'s operations changes a fragment: fast paths allowed

@@ -164,8 +164,8 @@ void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
 #endif
 
 bool Context::triangle_list_path(GLenum mode) const {
-  // Fog and polygon offset are applied by the general path only (raster/fragment_ops.cpp): the
-  // triangle list's kernels have neither a fog coordinate nor a depth offset.
+  // Fog, polygon offset and the per-fragment operations are applied by the general path only
+  // (raster/fragment_ops.cpp): the triangle list's kernels have none of them.
   return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float &&
          !fog_ && !offset_fill_ && fragment_ops_default();
 }

@@ -16,7 +16,7 @@ bool* Context::capability(GLenum cap) {
     case GL_CULL_FACE: return &cull_face_;
     case GL_FOG: return &fog_;
     case GL_POLYGON_OFFSET_FILL: return &offset_fill_;
-    case GL_SCISSOR_TEST: case GL_ALPHA_TEST: case GL_BLEND: return fragment_capability(cap);
+    case GL_SCISSOR_TEST: case GL_ALPHA_TEST: case GL_BLEND: case GL_LINE_STIPPLE: return fragment_capability(cap);
     default: {
       const int i = light_index(cap);
       return i >= 0 ? &lights_[i].enabled : nullptr;

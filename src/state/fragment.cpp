@@ -69,6 +69,12 @@ void Context::DepthMask(bool on) {
   frag_.depth_mask = on;
 }
 
+void Context::LineStipple(GLint factor, GLushort pattern) {
+  if (!outside_begin_end()) return;
+  frag_.stipple_factor = std::clamp(factor, 1, 256);
+  frag_.stipple_pattern = pattern;
+}
+
 void Context::Scissor(GLint x, GLint y, GLsizei w, GLsizei h) {
   if (!outside_begin_end()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
@@ -85,6 +91,7 @@ bool* Context::fragment_capability(GLenum cap) {
     case GL_SCISSOR_TEST: return &frag_.scissor_test;
     case GL_ALPHA_TEST: return &frag_.alpha_test;
     case GL_BLEND: return &frag_.blend;
+    case GL_LINE_STIPPLE: return &frag_.line_stipple;
     default: return nullptr;
   }
 }
@@ -115,6 +122,8 @@ int Context::fragment_values(GLenum pname, GLdouble* out, int& normalized) {
       for (int k = 0; k < 4; ++k) out[k] = frag_.color_mask[k];
       return 4;
     case GL_DEPTH_WRITEMASK: out[0] = frag_.depth_mask; return 1;
+    case GL_LINE_STIPPLE_PATTERN: out[0] = frag_.stipple_pattern; return 1;
+    case GL_LINE_STIPPLE_REPEAT: out[0] = frag_.stipple_factor; return 1;
     case GL_ATTRIB_STACK_DEPTH: out[0] = double(attrib_stack_.size()); return 1;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: out[0] = double(client_attrib_stack_.size()); return 1;
     default: return 0;
@@ -144,6 +153,9 @@ void Context::fragment_raster_state(raster::State& rs) const {
   o.src_rgb = frag_.src_rgb, o.dst_rgb = frag_.dst_rgb, o.src_alpha = frag_.src_alpha, o.dst_alpha = frag_.dst_alpha;
   o.eq_rgb = frag_.eq_rgb, o.eq_alpha = frag_.eq_alpha;
   for (int k = 0; k < 4; ++k) o.blend_color[k] = raster::to_unorm8(frag_.blend_color[k]);
+  rs.line_stipple = frag_.line_stipple;
+  rs.stipple_factor = frag_.stipple_factor, rs.stipple_pattern = frag_.stipple_pattern;
+  rs.stipple_counter = &stipple_counter_;
   o.color_mask = 0;
   for (int k = 0; k < 4; ++k) o.color_mask |= unsigned(frag_.color_mask[k]) << k;
 }

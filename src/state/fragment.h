@@ -20,6 +20,10 @@ struct FragmentState {
   glm::vec4 blend_color{0};  // clamped to [0, 1], as the alpha reference
   bool color_mask[4] = {true, true, true, true};
   bool depth_mask = true;
+  // Line stipple (section 3.4.2), rasterization state kept here with the others of this helper.
+  bool line_stipple = false;
+  GLint stipple_factor = 1;  // clamped to [1, 256]
+  GLushort stipple_pattern = 0xFFFF;
 };
 
 }  // namespace ffc::state

@@ -181,10 +181,11 @@ void Assembly::assemble(size_t n) {
       for (size_t i = 0; i < n; ++i) emit({i}, i, GL_POINT_TOKEN);
       break;
     case GL_LINES:
-      for (size_t i = 0; i + 1 < n; i += 2) emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
+      for (size_t i = 0; i + 1 < n; i += 2) raster::reset_stipple(rs_), emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
       break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
+      raster::reset_stipple(rs_);  // the stipple pattern runs on along a strip (GL 2.1 section 3.4.2)
       for (size_t i = 0; i + 1 < n; ++i) emit({i, i + 1}, i + 1, GL_LINE_TOKEN);
       if (c_.prim_mode_ == GL_LINE_LOOP && n >= 2) emit({n - 1, 0}, 0, GL_LINE_TOKEN);
       break;

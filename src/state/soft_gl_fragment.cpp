@@ -23,6 +23,7 @@ void APIENTRY BlendFuncSeparate(GLenum sr, GLenum dr, GLenum sa, GLenum da) {
 void APIENTRY ColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) { LISTABLE(ColorMask, r, g, b, a); FWD(ColorMask(r, g, b, a)); }
 void APIENTRY DepthMask(GLboolean on) { LISTABLE(DepthMask, on); FWD(DepthMask(on)); }
 void APIENTRY Scissor(GLint x, GLint y, GLsizei w, GLsizei h) { LISTABLE(Scissor, x, y, w, h); FWD(Scissor(x, y, w, h)); }
+void APIENTRY LineStipple(GLint factor, GLushort pattern) { LISTABLE(LineStipple, factor, pattern); FWD(LineStipple(factor, pattern)); }
 
 // A bitmap in a list: its bits unpacked when the list is compiled (GL 2.1 section 5.4), by the
 // GL_UNPACK_* state of that moment, into rows of whole bytes kept by the list; replayed whatever

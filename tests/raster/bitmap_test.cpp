@@ -15,9 +15,6 @@
 namespace ffc {
 namespace {
 
-using picture_test::Difference;
-using picture_test::run_both;
-
 constexpr int kSize = 64;
 
 int pick(std::mt19937& rng, int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); }
@@ -70,15 +67,9 @@ void text_case(int seed) {
 
 TEST(Bitmap, TextMatchesMesa) {
   constexpr int kCases = 240;
-  int inexact = 0, drawn = 0;
-  std::string first;
-  for (int seed = 0; seed < kCases; ++seed) {
-    const Difference d = run_both(kSize, seed, text_case);
-    inexact += d.inexact, drawn += d.drawn;
-    if (d.inexact && first.empty()) first = "case " + std::to_string(seed) + ": " + std::to_string(d.inexact) + " pixels, " + d.first;
-  }
-  EXPECT_EQ(inexact, 0) << first;
-  EXPECT_GT(drawn, kCases * 100);  // glyphs drawn
+  const picture_test::Tally t = picture_test::run_cases(kSize, kCases, text_case);
+  EXPECT_EQ(t.inexact, 0) << t.first;
+  EXPECT_GT(t.drawn, kCases * 100);  // glyphs drawn
 }
 
 }  // namespace

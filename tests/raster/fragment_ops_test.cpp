@@ -16,9 +16,6 @@
 namespace ffc {
 namespace {
 
-using picture_test::Difference;
-using picture_test::run_both;
-
 constexpr int kSize = 48;
 
 const GLenum kFactors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
@@ -101,18 +98,12 @@ void fragment_case(int seed) {
 
 TEST(FragmentOps, PicturesMatchMesa) {
   constexpr int kCases = 360;
-  int far = 0, inexact = 0, drawn = 0;
-  std::string first;
-  for (int seed = 0; seed < kCases; ++seed) {
-    const Difference d = run_both(kSize, seed, fragment_case);
-    far += d.far > 0, inexact += d.inexact, drawn += d.drawn;
-    if (first.empty()) first = d.first;
-  }
-  EXPECT_EQ(far, 0) << far << " of " << kCases << " cases differ by more than 1; first: " << first;
+  const picture_test::Tally t = picture_test::run_cases(kSize, kCases, fragment_case);
+  EXPECT_EQ(t.far_cases, 0) << t.far_cases << " of " << kCases << " cases differ by more than 1; first: " << t.first;
   // The same cases without the operations differ in 17 single pixels by one step (colour
   // interpolation of lines and points); with them, in 12.
-  EXPECT_LE(inexact, 24) << "pixels not identical";
-  EXPECT_GT(drawn, kCases * kSize * kSize / 2);
+  EXPECT_LE(t.inexact, 24) << "pixels not identical";
+  EXPECT_GT(t.drawn, kCases * kSize * kSize / 2);
 }
 
 // Every source byte against every destination byte for each of the 225 factor pairs and each
@@ -142,14 +133,8 @@ void blend_grid(int seed) {
 }
 
 TEST(FragmentOps, BlendingBitExact) {
-  int inexact = 0;
-  std::string first;
-  for (int seed = 0; seed < 225 + 50; ++seed) {
-    const Difference d = run_both(64, seed, blend_grid);
-    inexact += d.inexact;
-    if (d.inexact && first.empty()) first = "case " + std::to_string(seed) + ": " + std::to_string(d.inexact) + " pixels";
-  }
-  EXPECT_EQ(inexact, 0) << first;
+  const picture_test::Tally t = picture_test::run_cases(64, 225 + 50, blend_grid);
+  EXPECT_EQ(t.inexact, 0) << t.first;
 }
 
 // glDrawPixels through the operations: a random image (bytes or floats, RGBA or RGB) at a random
@@ -190,14 +175,8 @@ void draw_pixels_case(int seed) {
 }
 
 TEST(FragmentOps, DrawPixelsBitExact) {
-  int inexact = 0;
-  std::string first;
-  for (int seed = 0; seed < 160; ++seed) {
-    const Difference d = run_both(kSize, seed, draw_pixels_case);
-    inexact += d.inexact;
-    if (d.inexact && first.empty()) first = "case " + std::to_string(seed) + ": " + std::to_string(d.inexact) + " pixels";
-  }
-  EXPECT_EQ(inexact, 0) << first;
+  const picture_test::Tally t = picture_test::run_cases(kSize, 160, draw_pixels_case);
+  EXPECT_EQ(t.inexact, 0) << t.first;
 }
 
 }  // namespace

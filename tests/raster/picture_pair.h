@@ -64,4 +64,22 @@ inline Difference run_both(int size, int seed, const std::function<void(int)>& d
   return compare(pic[0], pic[1], "case " + std::to_string(seed));
 }
 
+// Cases 0 .. count-1 of `draw`: cases with a far pixel, pixels not identical and pixels drawn, in
+// all; the first case that differs described.
+struct Tally {
+  int far_cases = 0, inexact = 0, drawn = 0;
+  std::string first;
+};
+inline Tally run_cases(int size, int count, const std::function<void(int)>& draw) {
+  Tally t;
+  for (int seed = 0; seed < count; ++seed) {
+    const Difference d = run_both(size, seed, draw);
+    t.far_cases += d.far > 0, t.inexact += d.inexact, t.drawn += d.drawn;
+    if (d.inexact && t.first.empty())
+      t.first = "case " + std::to_string(seed) + ": " + std::to_string(d.inexact) + " pixels not identical, " +
+                std::to_string(d.far) + " more than one step apart " + d.first;
+  }
+  return t;
+}
+
 }  // namespace ffc::picture_test

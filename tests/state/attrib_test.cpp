@@ -18,7 +18,8 @@ void set_everything(int v) {
   auto on = [&](GLenum cap, bool state) { state ? glEnable(cap) : glDisable(cap); };
   for (GLenum cap : {GL_LIGHTING, GL_LIGHT1, GL_NORMALIZE, GL_CULL_FACE, GL_DEPTH_TEST, GL_FOG, GL_BLEND,
                      GL_ALPHA_TEST, GL_SCISSOR_TEST, GL_POLYGON_OFFSET_FILL, GL_COLOR_MATERIAL, GL_LINE_SMOOTH,
-                     GL_RESCALE_NORMAL, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_CLIP_PLANE2, GL_COLOR_LOGIC_OP})
+                     GL_RESCALE_NORMAL, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_CLIP_PLANE2, GL_COLOR_LOGIC_OP,
+                     GL_LINE_STIPPLE})
     on(cap, (cap + v) % 2);
   on(GL_DITHER, v == 0);
   light4(GL_LIGHT1, GL_POSITION, a, b, 1, v);
@@ -29,7 +30,7 @@ void set_everything(int v) {
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, v);
   glShadeModel(v ? GL_FLAT : GL_SMOOTH);
   glColorMaterial(v ? GL_BACK : GL_FRONT, v ? GL_SPECULAR : GL_DIFFUSE);
-  glLineWidth(1 + 2 * a), glPointSize(1 + 3 * b);
+  glLineWidth(1 + 2 * a), glPointSize(1 + 3 * b), glLineStipple(1 + 3 * v, GLushort(0x0F0F + v));
   glFogi(GL_FOG_MODE, v ? GL_LINEAR : GL_EXP2), glFogf(GL_FOG_DENSITY, a), glFogf(GL_FOG_START, b);
   glFogf(GL_FOG_END, 2 + a);
   const GLfloat fog_color[4] = {a, b, a, b};
@@ -54,7 +55,8 @@ void observe_fragment() {
   const GLenum names[] = {GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_BLEND_SRC_ALPHA, GL_BLEND_DST_ALPHA,
                           GL_BLEND_EQUATION, GL_BLEND_EQUATION_ALPHA, GL_BLEND_COLOR, GL_ALPHA_TEST_FUNC,
                           GL_ALPHA_TEST_REF, GL_COLOR_WRITEMASK, GL_DEPTH_WRITEMASK, GL_SCISSOR_BOX,
-                          GL_ATTRIB_STACK_DEPTH, GL_CLIENT_ATTRIB_STACK_DEPTH, GL_LOGIC_OP, GL_DITHER};
+                          GL_ATTRIB_STACK_DEPTH, GL_CLIENT_ATTRIB_STACK_DEPTH, GL_LOGIC_OP, GL_DITHER,
+                          GL_LINE_STIPPLE, GL_LINE_STIPPLE_PATTERN, GL_LINE_STIPPLE_REPEAT};
   for (GLenum n : names) {
     GLfloat f[4] = {-7, -7, -7, -7};
     glGetFloatv(n, f);

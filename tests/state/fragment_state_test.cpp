@@ -16,7 +16,8 @@ void observe_fragment_state() {
   const GLenum names[] = {GL_BLEND_SRC, GL_BLEND_DST, GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_BLEND_SRC_ALPHA,
                           GL_BLEND_DST_ALPHA, GL_BLEND_EQUATION, GL_BLEND_EQUATION_ALPHA, GL_BLEND_COLOR,
                           GL_ALPHA_TEST_FUNC, GL_ALPHA_TEST_REF, GL_COLOR_WRITEMASK, GL_DEPTH_WRITEMASK,
-                          GL_SCISSOR_BOX, GL_BLEND, GL_ALPHA_TEST, GL_SCISSOR_TEST};
+                          GL_SCISSOR_BOX, GL_BLEND, GL_ALPHA_TEST, GL_SCISSOR_TEST, GL_LINE_STIPPLE,
+                          GL_LINE_STIPPLE_PATTERN, GL_LINE_STIPPLE_REPEAT};
   for (GLenum n : names) {
     GLint i[4] = {-7, -7, -7, -7};
     GLfloat f[4] = {-7, -7, -7, -7};
@@ -27,7 +28,7 @@ void observe_fragment_state() {
       observe("int " + label, i[k]), observe("float " + label, f[k]), observe("bool " + label, b[k]);
     }
   }
-  for (GLenum c : {GL_BLEND, GL_ALPHA_TEST, GL_SCISSOR_TEST}) observe("enabled " + enum_name(c), glIsEnabled(c));
+  for (GLenum c : {GL_BLEND, GL_ALPHA_TEST, GL_SCISSOR_TEST, GL_LINE_STIPPLE}) observe("enabled " + enum_name(c), glIsEnabled(c));
 }
 
 // The call, then the state read back.
@@ -78,6 +79,11 @@ std::vector<Case> cases() {
       {"ScissorNegativeWidth", nullptr, then_observe([] { glScissor(0, 0, -1, 4); }), IV},
       {"ScissorNegativeHeight", nullptr, then_observe([] { glScissor(0, 0, 4, -1); }), IV},
       {"ScissorInsideBeginEnd", nullptr, then_observe(inside([] { glScissor(1, 1, 1, 1); })), IO},
+      {"LineStipple", nullptr, then_observe([] { glLineStipple(3, 0xF0F1); }), OK},
+      {"LineStippleFactorClampedHigh", nullptr, then_observe([] { glLineStipple(1000, 0x1234); }), OK},
+      {"LineStippleFactorClampedLow", nullptr, then_observe([] { glLineStipple(-5, 0x8001); }), OK},
+      {"LineStippleInsideBeginEnd", nullptr, then_observe(inside([] { glLineStipple(2, 0x00FF); })), IO},
+      {"EnableLineStipple", nullptr, then_observe([] { glEnable(GL_LINE_STIPPLE); }), OK},
       {"EnableAll", nullptr, then_observe([] { glEnable(GL_BLEND), glEnable(GL_ALPHA_TEST), glEnable(GL_SCISSOR_TEST); }), OK},
       {"DisableAgain", [] { glEnable(GL_BLEND), glEnable(GL_SCISSOR_TEST); },
        then_observe([] { glDisable(GL_BLEND), glDisable(GL_SCISSOR_TEST); }), OK},
