@@ -33,6 +33,8 @@ const std::vector<Category>& categories() {
       {"nonfinite", "NaN and infinities in float and double arguments and arrays"},
       {"rasterpos", "glRasterPos2f and glDrawPixels"},
       {"huge", "viewports of tens of thousands of pixels and draws of millions of vertices"},
+      {"lists", "display lists: glNewList (both modes) around the other calls, glEndList, glCallList, glCallLists of every type, glListBase, glGenLists, glDeleteLists, glIsList"},
+      {"selection", "glSelectBuffer, glRenderMode(GL_SELECT), the name stack (past its ends too), glPassThrough"},
   };
   return v;
 }
@@ -82,7 +84,11 @@ class Gen {
       }
     }
     if (in_begin_) emit("glEnd", {});
-    if (in_feedback_) emit("glRenderMode", {num(GL_RENDER)});
+    if (compiling_) {
+      emit("glEndList", {});
+      emit("glCallList", {num(list_name_)});
+    }
+    if (in_feedback_ || in_select_) emit("glRenderMode", {num(GL_RENDER)});
     checkpoint();
     return std::move(s_);
   }
@@ -93,6 +99,8 @@ class Gen {
   Stream s_;
   int counted_ = 0;
   bool in_begin_ = false, in_feedback_ = false, arrays_set_ = false;
+  bool compiling_ = false, in_select_ = false;  // inside glNewList; in GL_SELECT
+  int list_name_ = 0;
   bool keep_valid_ = false;  // no invalid value in the calls emitted meanwhile
 
   // ------------------------------------------------------------ random values
@@ -200,6 +208,7 @@ class Gen {
         {"arrays", &Gen::array_draw, 4},    {"feedback", &Gen::feedback_call, 2}, {"readpixels", &Gen::readpixels_call, 1},
         {"get", &Gen::get_call, 2},         {"clear", &Gen::clear_call, 1},       {"fog", &Gen::fog_call, 1},
         {"rasterpos", &Gen::rasterpos_call, 1}, {"huge", &Gen::huge_call, 1},
+        {"lists", &Gen::list_call, 2},      {"selection", &Gen::selection_call, 2},
     };
     int total = 0;
     for (const auto& a : actions)
@@ -483,7 +492,60 @@ class Gen {
     const int size = one_of({16, 256, 2048});
     emit("glFeedbackBuffer", {num(size), num(one_of({GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR, GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE})), Arg::out(size)});
     emit("glRenderMode", {num(GL_FEEDBACK)});
-    in_feedback_ = true;
+    in_feedback_ = true, in_select_ = false;
+  }
+
+  // Lists 1 to 6 (and 7, never compiled): calls made while one compiles are recorded.
+  void list_call() {
+    if (compiling_ && chance(0.5)) {
+      emit("glEndList", {});
+      compiling_ = false;
+      return;
+    }
+    switch (pick(8)) {
+      case 0: case 1: {
+        const int name = 1 + pick(6);
+        emit("glNewList", {num(name), num(chance(0.7) ? GL_COMPILE : GL_COMPILE_AND_EXECUTE)});
+        if (!compiling_) list_name_ = name;  // a second glNewList is an error and changes nothing
+        compiling_ = true;
+        break;
+      }
+      case 2: case 3: emit("glCallList", {num(1 + pick(7))}); break;
+      case 4: {
+        const GLenum type = GLenum(GL_BYTE + pick(10));
+        const int bytes = type == GL_2_BYTES ? 2 : type == GL_3_BYTES ? 3 : type == GL_4_BYTES ? 4 : 1;
+        const int n = 1 + pick(4);
+        std::vector<double> names;
+        for (int k = 0; k < n * bytes; ++k) names.push_back(bytes > 1 && k % bytes != bytes - 1 ? 0 : pick(8) - 1);
+        emit("glCallLists", {num(n), num(type), Arg::values(bytes > 1 ? GLenum(GL_UNSIGNED_BYTE) : type, names)});
+        break;
+      }
+      case 5: emit("glListBase", {num(pick(3))}); break;
+      case 6: emit(chance(0.5) ? "glGenLists" : "glIsList", {num(pick(4))}); break;
+      case 7: emit("glDeleteLists", {num(1 + pick(6)), num(pick(3))}); break;
+    }
+  }
+
+  void selection_call() {
+    if (!in_select_) {
+      if (chance(0.6)) {
+        const int size = one_of({4, 64, 512});
+        emit("glSelectBuffer", {num(size), Arg::out(size)});
+        emit("glRenderMode", {num(GL_SELECT)});
+        in_select_ = true, in_feedback_ = false;
+      } else {
+        emit("glPassThrough", {num(uni(-10, 10))});
+      }
+      return;
+    }
+    switch (pick(8)) {
+      case 0: emit("glRenderMode", {num(GL_RENDER)}); in_select_ = false; break;
+      case 1: emit("glInitNames", {}); break;
+      case 2: case 3: emit("glPushName", {num(pick(100))}); break;
+      case 4: emit("glPopName", {}); break;
+      case 5: case 6: emit("glLoadName", {num(pick(100))}); break;
+      case 7: emit("glPassThrough", {num(uni(-10, 10))}); break;
+    }
   }
 
   void readpixels_call() {

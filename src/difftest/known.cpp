@@ -137,6 +137,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("soft-line-smooth-not-modelled", state::kLineSmooth),
       drawn("soft-point-smooth-not-modelled", state::kPointSmooth),
       drawn("mesa-line-loop-wrap", state::kLineLoopWrap),
+      drawn("soft-texcoord-varying-not-modelled", state::kTexCoordVarying),
       // Row 44: the alpha of vertices sent before the glColor3, and so of the current colour too.
       {"mesa-color3-shrink-in-primitive", state::kColorShrinkInPrimitive,
        [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {

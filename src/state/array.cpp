@@ -45,6 +45,7 @@ void Context::fetch_vertex(GLint i, Fixed f) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     Color(c.r, c.g, c.b, c.a, color_array_.size);
   }
+  fetch_texcoord(i);
   if (vertex_array_.enabled) process_vertex(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
 }
 
@@ -52,7 +53,7 @@ void Context::fetch_vertex(GLint i, Fixed f) {
 // reads address 0 (a crash); ours reads nothing: GL_INVALID_OPERATION, as core profiles say of a
 // draw from no buffer.
 bool Context::arrays_readable() {
-  for (const ClientArray* a : {&vertex_array_, &normal_array_, &color_array_})
+  for (const ClientArray* a : {&vertex_array_, &normal_array_, &color_array_, &texcoord_array_})
     if (a->enabled && !a->pointer) return error(GL_INVALID_OPERATION), false;
   return true;
 }
@@ -79,6 +80,7 @@ void Context::ArrayElement(GLint i) {
 // per vertex when it comes from an array.
 void Context::begin_draw() {
   flush_stored();
+  texcoord_varies_ = false;
   set_color_varies(color_array_.enabled);
 }
 

@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "lighting/lighting.h"
+#include "state/display_list.h"
 #include "state/float_matrix.h"
+#include "state/selection.h"
 #include "raster/raster.h"
 #include "raster/triangle_list.h"
 
@@ -52,6 +54,9 @@ inline constexpr const char* kDrawPixelsFormat =
 inline constexpr const char* kLineLoopWrap =
     "a glColor inside glBegin(GL_LINE_LOOP) that grows the colour attribute after the first vertex: Mesa's vbo "
     "wraps the primitive and loses the loop's closing segment";
+inline constexpr const char* kTexCoordVarying =
+    "texture coordinates that vary between the vertices of one draw, in feedback: soft reports the current ones "
+    "for every vertex";
 inline constexpr const char* kTexGen =
     "texture coordinate generation (GL_TEXTURE_GEN_*) is not modelled: fed-back texture coordinates are the current ones";
 
@@ -171,6 +176,43 @@ class Context {
   void PixelStorei(GLenum pname, GLint param);
   const GLubyte* GetString(GLenum name);
 
+  // Display lists (display_list.cpp; recording: display_list.h).
+  GLuint GenLists(GLsizei range);
+  void DeleteLists(GLuint list, GLsizei range);
+  GLboolean IsList(GLuint list);
+  void NewList(GLuint list, GLenum mode);
+  void EndList();
+  void CallList(GLuint list);
+  void CallLists(GLsizei n, GLenum type, const void* lists);
+  void ListBase(GLuint base);
+  // Not GL: the list that calls are recorded into now (null when they only execute), and whether
+  // a recorded call also executes (GL_COMPILE_AND_EXECUTE).
+  DisplayList* list_recording();
+  bool list_executes() const { return lists_.mode == GL_COMPILE_AND_EXECUTE; }
+  // Vertex-array draws while compiling, dereferenced (indices null: first .. first + count - 1).
+  void compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first);
+  void compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices);
+  void compile_element(DisplayList& l, GLint i);
+  void begin_compiled_draw(GLenum mode);
+  void end_compiled_draw();
+  void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
+
+  // Texture coordinates, the edge flag, glRect, glHint, glInterleavedArrays (attributes.cpp).
+  void TexCoord(float s, float t, float r, float q);
+  void EdgeFlag(GLboolean flag);
+  void Rect(float x1, float y1, float x2, float y2);
+  void Hint(GLenum target, GLenum mode);
+  void TexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* p);
+  void InterleavedArrays(GLenum format, GLsizei stride, const void* p);
+
+  // Selection (selection.cpp) and glPassThrough (feedback.cpp).
+  void SelectBuffer(GLsizei size, GLuint* buffer);
+  void InitNames();
+  void LoadName(GLuint name);
+  void PushName(GLuint name);
+  void PopName();
+  void PassThrough(GLfloat token);
+
   // Not GL: records `e` as a GL call would (the first error stays until glGetError). The C ABI
   // (src/classic/gl) uses it for an entry point soft does not implement: GL_INVALID_OPERATION.
   void record_error(GLenum e) { error(e); }
@@ -199,7 +241,16 @@ class Context {
   // The rest of the list (get_table.cpp): state not modelled, at Mesa's defaults; 0 for a name
   // it does not know (no error recorded).
   int get_table_values(GLenum pname, GLdouble* out, int& normalized);
-  int fog_values(GLenum pname, GLdouble* out, int& normalized);  // fog.cpp: fog and polygon offset; 0 otherwise
+  int fog_values(GLenum pname, GLdouble* out, int& normalized);
+  int list_values(GLenum pname, GLdouble* out);  // display_list.cpp; 0 otherwise
+  int select_values(GLenum pname, GLdouble* out);  // selection.cpp; 0 otherwise
+  int attribute_values(GLenum pname, GLdouble* out);  // attributes.cpp; 0 otherwise
+  void fetch_texcoord(GLint i);
+  bool name_stack_call();
+  void select_put(GLuint v);
+  void select_hit(double window_z);
+  void write_hit();
+  GLint leave_select();  // glRenderMode's result on leaving GL_SELECT  // fog.cpp: fog and polygon offset; 0 otherwise
   std::vector<glm::dmat4>& stack();
   // The modelview as this context's precision keeps it: lights, normals and glGet read this one.
   glm::dmat4 modelview() const;
@@ -221,6 +272,7 @@ class Context {
   void process_vertex(const glm::dvec4& obj);
   glm::dvec4 mesa_raster_color(const float obj[4]);  // raster_pos.cpp
   void raster_pos_spec(double x, double y, double z, double w);
+  void set_raster_pos(double x, double y, double z, double w);  // glRasterPos but for selection
   void leave_triangle_list();  // the vertices kept for glEnd's triangle list: lit now, one by one
   void update_vertex_constants();  // lighting constants and the normal matrix, before vertex()
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
@@ -326,10 +378,11 @@ class Context {
   struct CurrentValues {
     glm::dvec3 normal;
     glm::dvec4 color;
+    glm::vec4 texcoord;
   };
-  CurrentValues current_values() const { return {normal_, color_}; }
+  CurrentValues current_values() const { return {normal_, color_, texcoord_}; }
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
-    normal_ = v.normal, color_ = v.color;
+    normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
     color_size_ = color_active_ = 0;
   }
   struct PendingMaterial {
@@ -390,6 +443,14 @@ class Context {
   GLint pack_alignment_ = 4, unpack_alignment_ = 4;
   std::map<GLenum, GLint> pixel_store_;  // the other glPixelStorei values, recorded and reported (0 by default)
   std::set<std::string> deviations_;
+  ListState lists_;  // display lists (display_list.h)
+  SelectState select_;  // selection (selection.h)
+  // attributes.cpp: the current texture coordinates and edge flag, the hints set, the array.
+  glm::vec4 texcoord_{0, 0, 0, 1};
+  bool texcoord_varies_ = false;  // since glBegin or the draw's start: per-vertex texture coordinates
+  bool edge_flag_ = true;
+  std::map<GLenum, GLenum> hints_;
+  ClientArray texcoord_array_{false, 4, GL_FLOAT, 0, nullptr};
 };
 
 }  // namespace ffc::state

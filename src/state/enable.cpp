@@ -117,6 +117,7 @@ void Context::set_client_state(GLenum array, bool on) {
   if (!a) {
     if (find_enable(kOtherArrays, array)) other_enables_[array] = on;
     else error(GL_INVALID_ENUM);
+    if (array == GL_TEXTURE_COORD_ARRAY) texcoord_array_.enabled = on;  // kept here too for the fetch
     return;
   }
   a->enabled = on;

@@ -42,6 +42,11 @@ void Context::feedback_primitive(GLenum kind, const raster::WindowVertex* w, siz
     if (kind == GL_POLYGON_TOKEN) feedback_put(double(vs.size()));
     float z[3] = {};
     if (kind == GL_POLYGON_TOKEN && offset_stage) feedback_offset(vs.begin(), rs, z);
+    if (render_mode_ == GL_SELECT) {  // a hit: its window depths, as feedback would report them
+      int k = 0;
+      for (const raster::WindowVertex* v : vs) select_hit(kind == GL_POLYGON_TOKEN && offset_stage ? z[k++] : v->pos.z);
+      return;
+    }
     int n = 0;
     for (const raster::WindowVertex* v : vs) {
       feedback_put(v->pos.x), feedback_put(v->pos.y);
@@ -51,7 +56,7 @@ void Context::feedback_primitive(GLenum kind, const raster::WindowVertex* w, siz
       if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
         for (int k = 0; k < 4; ++k) feedback_put(v->color[k]);
       if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
-        feedback_put(0), feedback_put(0), feedback_put(0), feedback_put(1);
+        for (int k = 0; k < 4; ++k) feedback_put(texcoord_[k]);
     }
   };
   if (kind == GL_POINT_TOKEN) return one({&w[0]});
@@ -60,9 +65,13 @@ void Context::feedback_primitive(GLenum kind, const raster::WindowVertex* w, siz
   for (size_t i = 1; i + 1 < count; ++i) one({&w[i], &w[i + 1], &w[0]});
 }
 
-// Fed-back texture coordinates are the current ones: texture generation is not modelled.
+// Fed-back texture coordinates are the current ones as set (Mesa reports them untransformed by the
+// texture matrix): texture generation is not modelled, nor coordinates that vary between the
+// vertices of one draw (soft's vertices carry none).
 void Context::note_texgen_in_feedback() {
-  if (feedback_type_ != GL_3D_COLOR_TEXTURE && feedback_type_ != GL_4D_COLOR_TEXTURE) return;
+  if (render_mode_ != GL_FEEDBACK || (feedback_type_ != GL_3D_COLOR_TEXTURE && feedback_type_ != GL_4D_COLOR_TEXTURE))
+    return;
+  if (texcoord_varies_) deviations_.insert(kTexCoordVarying);
   for (GLenum gen : {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q})
     if (enabled_state(gen) == 1) deviations_.insert(kTexGen);
 }
@@ -88,16 +97,25 @@ void Context::FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
 GLint Context::RenderMode(GLenum mode) {
   if (!outside_begin_end()) return 0;
   if (mode != GL_RENDER && mode != GL_FEEDBACK && mode != GL_SELECT) return error(GL_INVALID_ENUM), 0;
-  // Feedback needs a buffer of non-zero size; selection a glSelectBuffer, which ours does not
-  // provide. Mesa records GL_INVALID_OPERATION and then switches the mode all the same; ours
-  // stays in its mode, as GL 2.1 section 2.5 says.
+  // Feedback needs a buffer of non-zero size; selection a glSelectBuffer of non-zero size. Mesa
+  // records GL_INVALID_OPERATION and then switches the mode all the same; ours stays in its mode,
+  // as GL 2.1 section 2.5 says.
   if (mode == GL_FEEDBACK && feedback_size_ == 0) return error(GL_INVALID_OPERATION), 0;
-  if (mode == GL_SELECT) return error(GL_INVALID_OPERATION), 0;
+  if (mode == GL_SELECT && select_.size == 0) return error(GL_INVALID_OPERATION), 0;
   GLint result = 0;
   if (render_mode_ == GL_FEEDBACK) result = feedback_overflow_ ? -1 : feedback_count_;
+  if (render_mode_ == GL_SELECT) result = leave_select();
   render_mode_ = mode;
   feedback_count_ = 0;
   feedback_overflow_ = false;
   return result;
+}
+// glPassThrough: a marker in the feedback buffer (GL_PASS_THROUGH_TOKEN, then the value); nothing
+// in the other modes.
+void Context::PassThrough(GLfloat token) {
+  if (!outside_begin_end()) return;
+  if (render_mode_ != GL_FEEDBACK) return;
+  feedback_put(GL_PASS_THROUGH_TOKEN);
+  feedback_put(token);
 }
 }  // namespace ffc::state

@@ -45,7 +45,8 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
     n = 16, normalized = kFromFloat;
   };
-  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL) flush_current();  // FLUSH_CURRENT
+  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL || pname == GL_CURRENT_TEXTURE_COORDS || pname == GL_EDGE_FLAG)
+    flush_current();  // FLUSH_CURRENT
   switch (pname) {
     // The float context reports its float matrices, as Mesa does: the ones it draws with.
     case GL_MODELVIEW_MATRIX: mat(modelview()); break;
@@ -118,7 +119,10 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
         FFC_GET(double(on));
         break;
       }
-      n = fog_values(pname, out, normalized);
+      n = attribute_values(pname, out);  // before fog_values, which answers GL_FOG_HINT's default
+      if (n == 0) n = fog_values(pname, out, normalized);
+      if (n == 0) n = list_values(pname, out);
+      if (n == 0) n = select_values(pname, out);
       if (n == 0) n = get_table_values(pname, out, normalized);
       if (n == 0) return error(GL_INVALID_ENUM), 0;
     }
@@ -169,10 +173,12 @@ void Context::GetPointerv(GLenum pname, void** out) {
     case GL_NORMAL_ARRAY_POINTER: *out = const_cast<void*>(normal_array_.pointer); return;
     case GL_COLOR_ARRAY_POINTER: *out = const_cast<void*>(color_array_.pointer); return;
     // Arrays this pipeline has no pointer call for: never set, null as in GL's default state.
-    case GL_INDEX_ARRAY_POINTER: case GL_TEXTURE_COORD_ARRAY_POINTER: case GL_EDGE_FLAG_ARRAY_POINTER:
-    case GL_FOG_COORD_ARRAY_POINTER: case GL_SECONDARY_COLOR_ARRAY_POINTER: case GL_SELECTION_BUFFER_POINTER:
+    case GL_TEXTURE_COORD_ARRAY_POINTER: *out = const_cast<void*>(texcoord_array_.pointer); return;
+    case GL_INDEX_ARRAY_POINTER: case GL_EDGE_FLAG_ARRAY_POINTER:
+    case GL_FOG_COORD_ARRAY_POINTER: case GL_SECONDARY_COLOR_ARRAY_POINTER:
       *out = nullptr;
       return;
+    case GL_SELECTION_BUFFER_POINTER: *out = select_.buffer; return;
     case GL_FEEDBACK_BUFFER_POINTER: *out = feedback_; return;
   }
   error(GL_INVALID_ENUM);

@@ -66,6 +66,7 @@ void Context::Begin(GLenum mode) {
   vertices_kept_ = !spec_;
   in_begin_ = true;
   prim_mode_ = mode;
+  texcoord_varies_ = false;
   verts_.clear();
   // Triangles in immediate mode take the triangle-list path: the vertices are kept as sent and
   // lit together at glEnd, unless a glMaterial between them changes the lighting

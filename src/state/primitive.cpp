@@ -15,7 +15,7 @@ namespace ffc::state {
 // into triangles in Context::triangles_, lines and points drawn at once, or feedback.
 class Assembly {
  public:
-  explicit Assembly(Context& c) : c_(c), rs_(c.raster_state()), feedback_(c.render_mode_ == GL_FEEDBACK) {}
+  explicit Assembly(Context& c) : c_(c), rs_(c.raster_state()), feedback_(c.render_mode_ != GL_RENDER) {}
   void run();
 
  private:
@@ -45,7 +45,7 @@ class Assembly {
 };
 
 void Context::flush_primitive() {
-  if (render_mode_ != GL_SELECT) Assembly(*this).run();  // selection is not modelled: nothing is drawn
+  Assembly(*this).run();  // in selection mode, as feedback: hits instead of values
   verts_.clear();
 }
 
@@ -141,7 +141,7 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
   for (int k = 0; k < 3; ++k) scratch.prim[k] = verts[v[k]];
   raster::ClipTemps* temps = feedback_ ? &c_.clip_temps_ : nullptr;
   const raster::WindowPolygon w = raster::clip_and_map(scratch.prim, 3, rs_, &at(provoking), false, nullptr, temps);
-  if (feedback_ && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
+  if (feedback_ && c_.render_mode_ == GL_FEEDBACK && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
   if (w.empty()) return;
   if (feedback_) return c_.feedback_primitive(GL_POLYGON_TOKEN, w.begin(), w.size(), true, rs_, offset_stage_);
   raster::Triangle t;
@@ -159,7 +159,7 @@ void Assembly::line_or_point(std::initializer_list<size_t> idx, size_t provoking
   // that clipping makes (clip_and_map).
   raster::ClipTemps* temps = feedback_ ? &c_.clip_temps_ : nullptr;
   const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &at(provoking), true, nullptr, temps);
-  if (feedback_ && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
+  if (feedback_ && c_.render_mode_ == GL_FEEDBACK && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
   if (w.empty()) return;
   if (feedback_) return c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
   c_.flush_clear();

@@ -173,8 +173,14 @@ glm::dvec4 Context::mesa_raster_color(const float obj[4]) {
   return {clamp01(diffuse[0]), clamp01(diffuse[1]), clamp01(diffuse[2]), alpha};
 }
 
+// In selection mode a valid raster position is a hit at its window depth (Mesa's rastpos.c).
 void Context::RasterPos(double x, double y, double z, double w) {
   if (!outside_begin_end()) return;
+  set_raster_pos(x, y, z, w);
+  if (render_mode_ == GL_SELECT && raster_pos_.valid) select_hit(raster_pos_.window.z);
+}
+
+void Context::set_raster_pos(double x, double y, double z, double w) {
   flush_stored();  // Mesa: FLUSH_VERTICES and FLUSH_CURRENT first, then the state validated
   validate_matrices();
   if (precision_ == Precision::Double || spec_) return raster_pos_spec(x, y, z, w);

@@ -6,54 +6,71 @@
 
 #include "state/context.h"
 #include "state/gl_rules.h"
+#include "state/soft_gl_entries.h"
 
-namespace ffc::state {
-namespace {
-
-Context* C() { return Context::current(); }
+namespace ffc::state::entry {
 
 #define FWD(call) \
   if (Context* ctx_ = C()) ctx_->call
 
-void APIENTRY ArrayElement(GLint i) { FWD(ArrayElement(i)); }
-void APIENTRY Begin(GLenum m) { FWD(Begin(m)); }
-void APIENTRY Clear(GLbitfield m) { FWD(Clear(m)); }
-void APIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { FWD(ClearColor(r, g, b, a)); }
-void APIENTRY ClearDepth(GLclampd d) { FWD(ClearDepth(d)); }
-void APIENTRY Color3f(GLfloat r, GLfloat g, GLfloat b) { FWD(Color(r, g, b, 1, 3)); }
-void APIENTRY Color3fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], 1, 3)); }
-// Mesa's vbo takes glColor3ub (as every glColor3 but the float ones) as a 4-component colour with
-// alpha 1, so it never keeps an old alpha (Context::Color).
-void APIENTRY Color3ub(GLubyte r, GLubyte g, GLubyte b) { FWD(Color(r / 255.0, g / 255.0, b / 255.0, 1, 4)); }
-void APIENTRY Color4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { FWD(Color(r, g, b, a)); }
-void APIENTRY Color4fv(const GLfloat* v) { FWD(Color(v[0], v[1], v[2], v[3])); }
-void APIENTRY ColorMaterial(GLenum f, GLenum m) { FWD(ColorMaterial(f, m)); }
+// Draws from arrays compile as the values they read now (Context::compile_elements).
+void APIENTRY ArrayElement(GLint i) {
+  Context* c = C();
+  if (!c) return;
+  if (DisplayList* l = c->list_recording()) {
+    if (i >= 0) c->compile_element(*l, i);
+    if (!c->list_executes()) return;
+  }
+  c->ArrayElement(i);
+}
+void APIENTRY Begin(GLenum m) { LISTABLE(Begin, m); FWD(Begin(m)); }
+void APIENTRY Clear(GLbitfield m) { LISTABLE(Clear, m); FWD(Clear(m)); }
+void APIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { LISTABLE(ClearColor, r, g, b, a); FWD(ClearColor(r, g, b, a)); }
+void APIENTRY ClearDepth(GLclampd d) { LISTABLE(ClearDepth, d); FWD(ClearDepth(d)); }
+void APIENTRY ColorMaterial(GLenum f, GLenum m) { LISTABLE(ColorMaterial, f, m); FWD(ColorMaterial(f, m)); }
 void APIENTRY ColorPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FWD(ColorPointer(s, t, st, p)); }
-void APIENTRY CullFace(GLenum m) { FWD(CullFace(m)); }
-void APIENTRY DepthFunc(GLenum f) { FWD(DepthFunc(f)); }
-void APIENTRY DepthRange(GLclampd n, GLclampd f) { FWD(DepthRange(n, f)); }
-void APIENTRY Disable(GLenum c) { FWD(Disable(c)); }
+void APIENTRY CullFace(GLenum m) { LISTABLE(CullFace, m); FWD(CullFace(m)); }
+void APIENTRY DepthFunc(GLenum f) { LISTABLE(DepthFunc, f); FWD(DepthFunc(f)); }
+void APIENTRY DepthRange(GLclampd n, GLclampd f) { LISTABLE(DepthRange, n, f); FWD(DepthRange(n, f)); }
+void APIENTRY Disable(GLenum c) { LISTABLE(Disable, c); FWD(Disable(c)); }
 void APIENTRY DisableClientState(GLenum a) { FWD(DisableClientState(a)); }
-void APIENTRY DrawArrays(GLenum m, GLint f, GLsizei n) { FWD(DrawArrays(m, f, n)); }
-void APIENTRY DrawElements(GLenum m, GLsizei n, GLenum t, const GLvoid* i) { FWD(DrawElements(m, n, t, i)); }
-void APIENTRY Enable(GLenum c) { FWD(Enable(c)); }
+void APIENTRY DrawArrays(GLenum m, GLint f, GLsizei n) {
+  Context* c = C();
+  if (!c) return;
+  if (DisplayList* l = c->list_recording()) {
+    c->compile_elements(*l, m, n, nullptr, f);
+    if (!c->list_executes()) return;
+  }
+  c->DrawArrays(m, f, n);
+}
+void APIENTRY DrawElements(GLenum m, GLsizei n, GLenum t, const GLvoid* i) {
+  Context* c = C();
+  if (!c) return;
+  if (DisplayList* l = c->list_recording()) {
+    c->compile_draw_elements(*l, m, n, t, i);
+    if (!c->list_executes()) return;
+  }
+  c->DrawElements(m, n, t, i);
+}
+void APIENTRY Enable(GLenum c) { LISTABLE(Enable, c); FWD(Enable(c)); }
 void APIENTRY EnableClientState(GLenum a) { FWD(EnableClientState(a)); }
-void APIENTRY End() { FWD(End()); }
+void APIENTRY End() { LISTABLE(End); FWD(End()); }
 void APIENTRY FeedbackBuffer(GLsizei s, GLenum t, GLfloat* b) { FWD(FeedbackBuffer(s, t, b)); }
 void APIENTRY Finish() { FWD(Finish()); }
 void APIENTRY Flush() { FWD(Flush()); }
 // glFogf and glFogi pass one value through glFogfv, the other three 0 (Mesa's fog.c); glFogiv
 // maps a colour's integers onto [-1, 1] and converts the rest directly, an unknown pname passing
 // zeros on for glFogfv to reject.
-void APIENTRY Fogf(GLenum p, GLfloat v) {
-  const GLfloat f[4] = {v, 0, 0, 0};
-  FWD(Fogfv(p, f));
+// Pointer arguments are copied (as many values as the name takes) into a by-value twin that
+// display lists record.
+void APIENTRY FogValues(GLenum p, Floats<4> f) { LISTABLE(FogValues, p, f); FWD(Fogfv(p, f.v)); }
+void APIENTRY Fogf(GLenum p, GLfloat v) { FogValues(p, {{v, 0, 0, 0}}); }
+void APIENTRY Fogfv(GLenum p, const GLfloat* v) {
+  Floats<4> f{};
+  std::copy(v, v + (p == GL_FOG_COLOR ? 4 : 1), f.v);
+  FogValues(p, f);
 }
-void APIENTRY Fogfv(GLenum p, const GLfloat* v) { FWD(Fogfv(p, v)); }
-void APIENTRY Fogi(GLenum p, GLint v) {
-  const GLfloat f[4] = {GLfloat(v), 0, 0, 0};
-  FWD(Fogfv(p, f));
-}
+void APIENTRY Fogi(GLenum p, GLint v) { FogValues(p, {{GLfloat(v), 0, 0, 0}}); }
 void APIENTRY Fogiv(GLenum p, const GLint* v) {
   GLfloat f[4] = {0, 0, 0, 0};
   if (p == GL_FOG_COLOR)
@@ -61,10 +78,10 @@ void APIENTRY Fogiv(GLenum p, const GLint* v) {
   else if (p == GL_FOG_MODE || p == GL_FOG_DENSITY || p == GL_FOG_START || p == GL_FOG_END || p == GL_FOG_INDEX ||
            p == GL_FOG_COORD_SRC)
     f[0] = GLfloat(v[0]);
-  FWD(Fogfv(p, f));
+  FogValues(p, {{f[0], f[1], f[2], f[3]}});
 }
-void APIENTRY FrontFace(GLenum m) { FWD(FrontFace(m)); }
-void APIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Frustum(l, r, b, t, n, f)); }
+void APIENTRY FrontFace(GLenum m) { LISTABLE(FrontFace, m); FWD(FrontFace(m)); }
+void APIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { LISTABLE(Frustum, l, r, b, t, n, f); FWD(Frustum(l, r, b, t, n, f)); }
 void APIENTRY GetBooleanv(GLenum p, GLboolean* v) { FWD(GetBooleanv(p, v)); }
 void APIENTRY GetDoublev(GLenum p, GLdouble* v) { FWD(GetDoublev(p, v)); }
 GLenum APIENTRY GetError() { return C() ? C()->GetError() : GL_NO_ERROR; }
@@ -75,13 +92,43 @@ void APIENTRY GetLightfv(GLenum l, GLenum p, GLfloat* v) { FWD(GetLightfv(l, p, 
 void APIENTRY GetMaterialfv(GLenum f, GLenum p, GLfloat* v) { FWD(GetMaterialfv(f, p, v)); }
 const GLubyte* APIENTRY GetString(GLenum n) { return C() ? C()->GetString(n) : nullptr; }
 GLboolean APIENTRY IsEnabled(GLenum c) { return C() ? C()->IsEnabled(c) : GL_FALSE; }
-void APIENTRY LightModelf(GLenum p, GLfloat v) { FWD(LightModelf(p, v)); }
-void APIENTRY LightModelfv(GLenum p, const GLfloat* v) { FWD(LightModelfv(p, v)); }
-void APIENTRY LightModeli(GLenum p, GLint v) { FWD(LightModeli(p, v)); }
-void APIENTRY Lightf(GLenum l, GLenum p, GLfloat v) { FWD(Lightf(l, p, v)); }
-void APIENTRY Lightfv(GLenum l, GLenum p, const GLfloat* v) { FWD(Lightfv(l, p, v)); }
-void APIENTRY Lighti(GLenum l, GLenum p, GLint v) { FWD(Lighti(l, p, v)); }
-void APIENTRY Lightiv(GLenum l, GLenum p, const GLint* v) { FWD(Lightiv(l, p, v)); }
+void APIENTRY LightModelf(GLenum p, GLfloat v) { LISTABLE(LightModelf, p, v); FWD(LightModelf(p, v)); }
+void APIENTRY LightModelValues(GLenum p, Floats<4> f) { LISTABLE(LightModelValues, p, f); FWD(LightModelfv(p, f.v)); }
+void APIENTRY LightModelfv(GLenum p, const GLfloat* v) {
+  Floats<4> f{};
+  std::copy(v, v + (p == GL_LIGHT_MODEL_AMBIENT ? 4 : 1), f.v);
+  LightModelValues(p, f);
+}
+void APIENTRY LightModeli(GLenum p, GLint v) { LISTABLE(LightModeli, p, v); FWD(LightModeli(p, v)); }
+void APIENTRY Lightf(GLenum l, GLenum p, GLfloat v) { LISTABLE(Lightf, l, p, v); FWD(Lightf(l, p, v)); }
+void APIENTRY LightValues(GLenum l, GLenum p, Floats<4> f) { LISTABLE(LightValues, l, p, f); FWD(Lightfv(l, p, f.v)); }
+void APIENTRY Lightfv(GLenum l, GLenum p, const GLfloat* v) {
+  Floats<4> f{};
+  std::copy(v, v + light_param_count(p), f.v);
+  LightValues(l, p, f);
+}
+void APIENTRY Lighti(GLenum l, GLenum p, GLint v) { LISTABLE(Lighti, l, p, v); FWD(Lighti(l, p, v)); }
+void APIENTRY LightIntValues(GLenum l, GLenum p, Floats<4, GLint> f) {
+  LISTABLE(LightIntValues, l, p, f);
+  FWD(Lightiv(l, p, f.v));
+}
+void APIENTRY Lightiv(GLenum l, GLenum p, const GLint* v) {
+  Floats<4, GLint> f{};
+  std::copy(v, v + light_param_count(p), f.v);
+  LightIntValues(l, p, f);
+}
+int material_param_count(GLenum p) {
+  switch (p) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
+    case GL_SHININESS: return 1;
+    case GL_COLOR_INDEXES: return 3;
+  }
+  return 0;
+}
+void APIENTRY MaterialValues(GLenum face, GLenum p, Floats<4> v) {
+  LISTABLE(MaterialValues, face, p, v);
+  FWD(Materialfv(face, p, v.v));
+}
 // glLightModeliv and glMaterialiv convert as Mesa's do (light.c, api_loopback.c): colours map
 // onto [-1, 1], other values convert directly; an unknown pname passes through to the float call,
 // which raises the error.
@@ -91,7 +138,7 @@ void APIENTRY LightModeliv(GLenum p, const GLint* v) {
     for (int k = 0; k < 4; ++k) f[k] = int_to_float(v[k]);
   else if (p == GL_LIGHT_MODEL_LOCAL_VIEWER || p == GL_LIGHT_MODEL_TWO_SIDE || p == GL_LIGHT_MODEL_COLOR_CONTROL)
     f[0] = GLfloat(v[0]);
-  FWD(LightModelfv(p, f));
+  LightModelValues(p, {{f[0], f[1], f[2], f[3]}});
 }
 void APIENTRY Materialiv(GLenum face, GLenum p, const GLint* v) {
   GLfloat f[4] = {0, 0, 0, 0};
@@ -102,61 +149,89 @@ void APIENTRY Materialiv(GLenum face, GLenum p, const GLint* v) {
     case GL_SHININESS: f[0] = GLfloat(v[0]); break;
     case GL_COLOR_INDEXES: for (int k = 0; k < 3; ++k) f[k] = GLfloat(v[k]); break;
   }
-  FWD(Materialfv(face, p, f));
+  MaterialValues(face, p, {{f[0], f[1], f[2], f[3]}});
 }
-void APIENTRY LineWidth(GLfloat w) { FWD(LineWidth(w)); }
-void APIENTRY LoadIdentity() { FWD(LoadIdentity()); }
-void APIENTRY LoadMatrixd(const GLdouble* m) { FWD(LoadMatrix(glm::make_mat4(m))); }
-void APIENTRY LoadMatrixf(const GLfloat* m) { FWD(LoadMatrix(glm::dmat4(glm::make_mat4(m)))); }
-void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { FWD(Materialf(f, p, v)); }
-void APIENTRY Materialfv(GLenum f, GLenum p, const GLfloat* v) { FWD(Materialfv(f, p, v)); }
-void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { FWD(Materiali(f, p, v)); }
-void APIENTRY MatrixMode(GLenum m) { FWD(MatrixMode(m)); }
-void APIENTRY MultMatrixd(const GLdouble* m) { FWD(MultMatrix(glm::make_mat4(m))); }
-void APIENTRY MultMatrixf(const GLfloat* m) { FWD(MultMatrix(glm::dmat4(glm::make_mat4(m)))); }
-void APIENTRY Normal3d(GLdouble x, GLdouble y, GLdouble z) { FWD(Normal(x, y, z)); }
-void APIENTRY Normal3dv(const GLdouble* v) { FWD(Normal(v[0], v[1], v[2])); }
-void APIENTRY Normal3f(GLfloat x, GLfloat y, GLfloat z) { FWD(Normal(x, y, z)); }
-void APIENTRY Normal3fv(const GLfloat* v) { FWD(Normal(v[0], v[1], v[2])); }
+void APIENTRY LineWidth(GLfloat w) { LISTABLE(LineWidth, w); FWD(LineWidth(w)); }
+void APIENTRY LoadIdentity() { LISTABLE(LoadIdentity); FWD(LoadIdentity()); }
+void APIENTRY LoadMatrixValues(Floats<16, GLdouble> m) { LISTABLE(LoadMatrixValues, m); FWD(LoadMatrix(glm::make_mat4(m.v))); }
+void APIENTRY MultMatrixValues(Floats<16, GLdouble> m) { LISTABLE(MultMatrixValues, m); FWD(MultMatrix(glm::make_mat4(m.v))); }
+Floats<16, GLdouble> matrix_values(const GLdouble* m) {
+  Floats<16, GLdouble> d;
+  std::copy(m, m + 16, d.v);
+  return d;
+}
+Floats<16, GLdouble> matrix_values(const GLfloat* m) {
+  Floats<16, GLdouble> d;
+  std::copy(m, m + 16, d.v);
+  return d;
+}
+void APIENTRY LoadMatrixd(const GLdouble* m) { LoadMatrixValues(matrix_values(m)); }
+void APIENTRY LoadMatrixf(const GLfloat* m) { LoadMatrixValues(matrix_values(m)); }
+void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { LISTABLE(Materialf, f, p, v); FWD(Materialf(f, p, v)); }
+void APIENTRY Materialfv(GLenum f, GLenum p, const GLfloat* v) {
+  Floats<4> c{};
+  std::copy(v, v + material_param_count(p), c.v);
+  MaterialValues(f, p, c);
+}
+void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { LISTABLE(Materiali, f, p, v); FWD(Materiali(f, p, v)); }
+void APIENTRY MatrixMode(GLenum m) { LISTABLE(MatrixMode, m); FWD(MatrixMode(m)); }
+void APIENTRY MultMatrixd(const GLdouble* m) { MultMatrixValues(matrix_values(m)); }
+void APIENTRY MultMatrixf(const GLfloat* m) { MultMatrixValues(matrix_values(m)); }
 void APIENTRY NormalPointer(GLenum t, GLsizei s, const GLvoid* p) { FWD(NormalPointer(t, s, p)); }
-void APIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { FWD(Ortho(l, r, b, t, n, f)); }
+void APIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) { LISTABLE(Ortho, l, r, b, t, n, f); FWD(Ortho(l, r, b, t, n, f)); }
 void APIENTRY PixelStorei(GLenum p, GLint v) { FWD(PixelStorei(p, v)); }
-void APIENTRY PointSize(GLfloat s) { FWD(PointSize(s)); }
-void APIENTRY PolygonOffset(GLfloat f, GLfloat u) { FWD(PolygonOffset(f, u)); }
-void APIENTRY PopMatrix() { FWD(PopMatrix()); }
-void APIENTRY PushMatrix() { FWD(PushMatrix()); }
+void APIENTRY PointSize(GLfloat s) { LISTABLE(PointSize, s); FWD(PointSize(s)); }
+void APIENTRY PolygonOffset(GLfloat f, GLfloat u) { LISTABLE(PolygonOffset, f, u); FWD(PolygonOffset(f, u)); }
+void APIENTRY PopMatrix() { LISTABLE(PopMatrix); FWD(PopMatrix()); }
+void APIENTRY PushMatrix() { LISTABLE(PushMatrix); FWD(PushMatrix()); }
 void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }
 GLint APIENTRY RenderMode(GLenum m) { return C() ? C()->RenderMode(m) : 0; }
-void APIENTRY RasterPos2f(GLfloat x, GLfloat y) { FWD(RasterPos(x, y, 0, 1)); }
+void APIENTRY RasterPos2f(GLfloat x, GLfloat y) { LISTABLE(RasterPos2f, x, y); FWD(RasterPos(x, y, 0, 1)); }
 void APIENTRY DrawPixels(GLsizei w, GLsizei h, GLenum f, GLenum t, const GLvoid* p) { FWD(DrawPixels(w, h, f, t, p)); }
-void APIENTRY Rotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z) { FWD(Rotate(a, x, y, z)); }
+void APIENTRY Rotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z) { LISTABLE(Rotated, a, x, y, z); FWD(Rotate(a, x, y, z)); }
 // glRotatef and friends build their matrices from float arguments; the double maths after that
 // differs from Mesa's float maths by rounding only.
-void APIENTRY Rotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { FWD(Rotate(a, x, y, z)); }
-void APIENTRY Scaled(GLdouble x, GLdouble y, GLdouble z) { FWD(Scale(x, y, z)); }
-void APIENTRY Scalef(GLfloat x, GLfloat y, GLfloat z) { FWD(Scale(x, y, z)); }
-void APIENTRY ShadeModel(GLenum m) { FWD(ShadeModel(m)); }
-void APIENTRY Translated(GLdouble x, GLdouble y, GLdouble z) { FWD(Translate(x, y, z)); }
-void APIENTRY Translatef(GLfloat x, GLfloat y, GLfloat z) { FWD(Translate(x, y, z)); }
-void APIENTRY Vertex2f(GLfloat x, GLfloat y) { FWD(Vertex(x, y, 0, 1)); }
-void APIENTRY Vertex3d(GLdouble x, GLdouble y, GLdouble z) { FWD(Vertex(x, y, z, 1)); }
-void APIENTRY Vertex3dv(const GLdouble* v) { FWD(Vertex(v[0], v[1], v[2], 1)); }
-void APIENTRY Vertex3f(GLfloat x, GLfloat y, GLfloat z) { FWD(Vertex(x, y, z, 1)); }
-void APIENTRY Vertex3fv(const GLfloat* v) { FWD(Vertex(v[0], v[1], v[2], 1)); }
+void APIENTRY Rotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) { LISTABLE(Rotatef, a, x, y, z); FWD(Rotate(a, x, y, z)); }
+void APIENTRY Scaled(GLdouble x, GLdouble y, GLdouble z) { LISTABLE(Scaled, x, y, z); FWD(Scale(x, y, z)); }
+void APIENTRY Scalef(GLfloat x, GLfloat y, GLfloat z) { LISTABLE(Scalef, x, y, z); FWD(Scale(x, y, z)); }
+void APIENTRY ShadeModel(GLenum m) { LISTABLE(ShadeModel, m); FWD(ShadeModel(m)); }
+void APIENTRY Translated(GLdouble x, GLdouble y, GLdouble z) { LISTABLE(Translated, x, y, z); FWD(Translate(x, y, z)); }
+void APIENTRY Translatef(GLfloat x, GLfloat y, GLfloat z) { LISTABLE(Translatef, x, y, z); FWD(Translate(x, y, z)); }
 void APIENTRY VertexPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FWD(VertexPointer(s, t, st, p)); }
-void APIENTRY Viewport(GLint x, GLint y, GLsizei w, GLsizei h) { FWD(Viewport(x, y, w, h)); }
+void APIENTRY Viewport(GLint x, GLint y, GLsizei w, GLsizei h) { LISTABLE(Viewport, x, y, w, h); FWD(Viewport(x, y, w, h)); }
+// Display lists (display_list.cpp). glCallList and glListBase compile; glCallLists records its
+// names itself; the others execute at once.
+void APIENTRY CallList(GLuint l) { LISTABLE(CallList, l); FWD(CallList(l)); }
+void APIENTRY CallLists(GLsizei n, GLenum t, const GLvoid* l) { FWD(CallLists(n, t, l)); }
+void APIENTRY DeleteLists(GLuint l, GLsizei r) { FWD(DeleteLists(l, r)); }
+void APIENTRY EndList() { FWD(EndList()); }
+GLuint APIENTRY GenLists(GLsizei r) { return C() ? C()->GenLists(r) : 0; }
+GLboolean APIENTRY IsList(GLuint l) { return C() ? C()->IsList(l) : GL_FALSE; }
+void APIENTRY ListBase(GLuint b) { LISTABLE(ListBase, b); FWD(ListBase(b)); }
+void APIENTRY NewList(GLuint l, GLenum m) { FWD(NewList(l, m)); }
+// Selection (selection.cpp): the name stack compiles into lists, glSelectBuffer does not.
+void APIENTRY InitNames() { LISTABLE(InitNames); FWD(InitNames()); }
+void APIENTRY LoadName(GLuint n) { LISTABLE(LoadName, n); FWD(LoadName(n)); }
+void APIENTRY PassThrough(GLfloat t) { LISTABLE(PassThrough, t); FWD(PassThrough(t)); }
+void APIENTRY PopName() { LISTABLE(PopName); FWD(PopName()); }
+void APIENTRY PushName(GLuint n) { LISTABLE(PushName, n); FWD(PushName(n)); }
+void APIENTRY SelectBuffer(GLsizei s, GLuint* b) { FWD(SelectBuffer(s, b)); }
 #undef FWD
 
+}  // namespace ffc::state::entry
+
+namespace ffc::state {
+namespace {
 template <typename F>
-void* entry(F* f) {
+void* address(F* f) {
   return reinterpret_cast<void*>(f);
 }
-
 }  // namespace
 
 void* proc_address(const char* name) {
+  using namespace entry;
 #define FFC_GL_FUNCTION(ret, fn, params) \
-  if (std::strcmp(name, "gl" #fn) == 0) return entry(fn);
+  if (std::strcmp(name, "gl" #fn) == 0) return address(fn);
 #include "gl/gl_functions.inc"
 #undef FFC_GL_FUNCTION
   // Entry points outside the dispatch's list, for callers that load them by name.

@@ -293,4 +293,25 @@ inline void materialiv4(GLenum f, GLenum p, GLint a, GLint b, GLint c, GLint d) 
   ext().Materialiv(f, p, v);
 }
 
+// The picture, every byte, as observed values (16 x 16 RGBA).
+inline void observe_picture(const char* label) {
+  static GLubyte px[kWidth * kHeight * 4];
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  for (size_t i = 0; i < sizeof px; ++i) observe(std::string(label) + "[" + std::to_string(i) + "]", px[i]);
+}
+
+// Feedback into a buffer of `size` floats: the count glRenderMode returns on leaving feedback
+// mode (-1 on overflow), and the buffer with 8 floats past its end, which must stay untouched.
+inline Calls feedback_into(GLsizei size, GLenum type, const Calls& draw) {
+  return [=] {
+    static GLfloat buf[520];  // size + 8 at most
+    std::fill(std::begin(buf), std::end(buf), -7.0f);
+    glFeedbackBuffer(size, type, buf);
+    glRenderMode(GL_FEEDBACK);
+    draw();
+    observe("count", glRenderMode(GL_RENDER));
+    for (GLsizei i = 0; i < size + 8; ++i) observe("buf[" + std::to_string(i) + "]", buf[i]);
+  };
+}
+
 }  // namespace ffc::state_test

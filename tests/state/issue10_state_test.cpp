@@ -20,33 +20,12 @@ const float kNaNf = std::numeric_limits<float>::quiet_NaN();
 class Issue10 : public ::testing::TestWithParam<Case> {};
 TEST_P(Issue10, MatchesMesa) { check_case(GetParam()); }
 
-// The picture, every byte, as observed values (16 x 16 RGBA).
-void observe_picture(const char* label) {
-  static GLubyte px[kWidth * kHeight * 4];
-  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, px);
-  for (size_t i = 0; i < sizeof px; ++i) observe(std::string(label) + "[" + std::to_string(i) + "]", px[i]);
-}
-
 const GLubyte kImage[5 * 3 * 4] = {
     255, 0, 0, 255,   0, 255, 0, 255,   0, 0, 255, 255,   10, 20, 30, 40,  50, 60, 70, 80,
     90, 100, 110, 120, 130, 140, 150, 160, 170, 180, 190, 200, 210, 220, 230, 240, 250, 1, 2, 3,
     4, 5, 6, 7,       8, 9, 10, 11,       12, 13, 14, 15,     16, 17, 18, 19,  20, 21, 22, 23};
 const GLfloat kFloatImage[3 * 2 * 3] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f,
                                         1.5f, -0.5f, 0.25f, 0.33f, 0.66f, 0.99f, 0, 1, 0.5f};
-
-// Feedback into a buffer of `size` floats: the count glRenderMode returns on leaving feedback
-// mode (-1 on overflow), and the buffer with 8 floats past its end, which must stay untouched.
-Calls feedback_into(GLsizei size, GLenum type, const Calls& draw) {
-  return [=] {
-    static GLfloat buf[64];
-    std::fill(std::begin(buf), std::end(buf), -7.0f);
-    glFeedbackBuffer(size, type, buf);
-    glRenderMode(GL_FEEDBACK);
-    draw();
-    observe("count", glRenderMode(GL_RENDER));
-    for (GLsizei i = 0; i < size + 8; ++i) observe("buf[" + std::to_string(i) + "]", buf[i]);
-  };
-}
 
 // The fuzzer's strip: a triangle with two equal vertices and one above the view volume, clipped.
 void clipped_degenerate_strip() {

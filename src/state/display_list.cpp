@@ -1,0 +1,226 @@
+// Display lists (GL 2.1 section 5.4): the name space (glGenLists, glDeleteLists, glIsList),
+// compiling (glNewList/glEndList), executing (glCallList, glCallLists, glListBase), and the
+// compile-time dereference of vertex arrays. How calls are recorded: display_list.h.
+#include "state/display_list.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "state/client_arrays.h"
+#include "state/context.h"
+#include "state/gl_rules.h"
+
+namespace ffc::state {
+
+void DisplayList::replay() const {
+  const unsigned char* p = bytes_.data();
+  const unsigned char* const end = p + bytes_.size();
+  while (p < end) p = take<Replay>(p)(p);
+}
+
+namespace {
+// What a dereferenced array element records: the values glArrayElement would send, by value.
+void list_normal(double x, double y, double z) {
+  if (Context* c = Context::current()) c->Normal(x, y, z);
+}
+void list_color(double r, double g, double b, double a, int components) {
+  if (Context* c = Context::current()) c->Color(r, g, b, a, components);
+}
+void list_vertex(double x, double y, double z, double w) {
+  if (Context* c = Context::current()) c->Vertex(x, y, z, w);
+}
+void list_begin_draw(GLenum mode) {
+  if (Context* c = Context::current()) c->begin_compiled_draw(mode);
+}
+void list_end_draw() {
+  if (Context* c = Context::current()) c->end_compiled_draw();
+}
+void list_error(GLenum e) {
+  if (Context* c = Context::current()) c->record_error(e);
+}
+}  // namespace
+
+DisplayList* Context::list_recording() {
+  return lists_.mode != 0 && lists_.depth == 0 ? &lists_.compiling : nullptr;
+}
+
+GLuint Context::GenLists(GLsizei range) {
+  if (!outside_begin_end()) return 0;
+  if (range < 0) return error(GL_INVALID_VALUE), 0;
+  if (range == 0) return 0;
+  // Mesa's hash table gives out the name after the largest it ever held (names deleted below it are
+  // not reused while that leaves room), and holds the names given out, empty, until compiled.
+  if (lists_.max_name > ~GLuint(0) - 1 - GLuint(range)) return 0;  // Mesa's search from 1 not modelled
+  const GLuint first = lists_.max_name + 1;
+  for (GLsizei k = 0; k < range; ++k) lists_.lists[first + GLuint(k)];
+  lists_.max_name = first + GLuint(range) - 1;
+  return first;
+}
+
+void Context::DeleteLists(GLuint list, GLsizei range) {
+  if (!outside_begin_end()) return;
+  if (range < 0) return error(GL_INVALID_VALUE);
+  for (GLsizei k = 0; k < range; ++k) lists_.lists.erase(list + GLuint(k));
+}
+
+GLboolean Context::IsList(GLuint list) {
+  if (!outside_begin_end()) return GL_FALSE;
+  return list != 0 && lists_.lists.count(list) ? GL_TRUE : GL_FALSE;
+}
+
+void Context::NewList(GLuint list, GLenum mode) {
+  if (!outside_begin_end()) return;
+  if (list == 0) return error(GL_INVALID_VALUE);
+  if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return error(GL_INVALID_ENUM);
+  if (lists_.mode != 0) return error(GL_INVALID_OPERATION);
+  lists_.index = list;
+  lists_.mode = mode;
+  lists_.compiling.clear();
+}
+
+void Context::EndList() {
+  if (!outside_begin_end()) return;
+  if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
+  // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
+  lists_.lists[lists_.index] = std::move(lists_.compiling);
+  lists_.max_name = std::max(lists_.max_name, lists_.index);
+  lists_.compiling.clear();
+  lists_.index = 0;
+  lists_.mode = 0;
+}
+
+void Context::CallList(GLuint list) {
+  // Mesa stops silently at its nesting limit, and a name without a list does nothing.
+  if (lists_.depth >= ListState::kMaxNesting) return;
+  const auto it = lists_.lists.find(list);
+  if (it == lists_.lists.end()) return;
+  ++lists_.depth;
+  it->second.replay();
+  --lists_.depth;
+}
+
+namespace {
+// The i-th name of glCallLists' array, as an offset from the list base; false for an unknown type.
+GLuint list_offset(GLenum type, const void* lists, GLsizei i) {
+  const auto* b = static_cast<const GLubyte*>(lists);
+  switch (type) {
+    case GL_BYTE: return GLuint(GLint(static_cast<const GLbyte*>(lists)[i]));
+    case GL_UNSIGNED_BYTE: return b[i];
+    case GL_SHORT: return GLuint(GLint(static_cast<const GLshort*>(lists)[i]));
+    case GL_UNSIGNED_SHORT: return static_cast<const GLushort*>(lists)[i];
+    case GL_INT: return GLuint(static_cast<const GLint*>(lists)[i]);
+    case GL_UNSIGNED_INT: return static_cast<const GLuint*>(lists)[i];
+    case GL_FLOAT: {
+      const float f = static_cast<const GLfloat*>(lists)[i];
+      // (GLint) f as x86-64 converts it: out of range (or NaN) gives INT_MIN.
+      return f > -2147483649.0f && f < 2147483648.0f ? GLuint(GLint(f)) : GLuint(0x80000000u);
+    }
+    case GL_2_BYTES: return GLuint(b[2 * i]) << 8 | b[2 * i + 1];
+    case GL_3_BYTES: return GLuint(b[3 * i]) << 16 | GLuint(b[3 * i + 1]) << 8 | b[3 * i + 2];
+    case GL_4_BYTES:
+      return GLuint(b[4 * i]) << 24 | GLuint(b[4 * i + 1]) << 16 | GLuint(b[4 * i + 2]) << 8 | b[4 * i + 3];
+  }
+  return 0;
+}
+
+void replay_call_list_offset(GLuint offset);
+}  // namespace
+
+void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
+  if (type < GL_BYTE || type > GL_4_BYTES) return error(GL_INVALID_ENUM);
+  if (n < 0) return error(GL_INVALID_VALUE);
+  if (n == 0 || !lists) return;
+  // Compiled, the names are copied now and the list base read when the list runs.
+  if (DisplayList* l = list_recording()) {
+    for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
+    if (lists_.mode == GL_COMPILE) return;
+  }
+  const GLuint base = lists_.base;
+  for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
+}
+
+namespace {
+void replay_call_list_offset(GLuint offset) {
+  if (Context* c = Context::current()) c->call_list_offset(offset);
+}
+}  // namespace
+
+void Context::call_list_offset(GLuint offset) { CallList(lists_.base + offset); }
+
+void Context::ListBase(GLuint base) {
+  if (!outside_begin_end()) return;
+  lists_.base = base;
+}
+
+int Context::list_values(GLenum pname, GLdouble* out) {
+  switch (pname) {
+    case GL_LIST_INDEX: out[0] = lists_.index; return 1;
+    case GL_LIST_MODE: out[0] = lists_.mode; return 1;
+    case GL_LIST_BASE: out[0] = lists_.base; return 1;
+    case GL_MAX_LIST_NESTING: out[0] = ListState::kMaxNesting; return 1;
+  }
+  return 0;
+}
+
+// A draw from vertex arrays while compiling: the elements are read now and recorded as the
+// glBegin / glNormal / glColor / glVertex / glEnd calls that glArrayElement would make, so the
+// list does not depend on the arrays later (section 5.4). The draw's own errors are recorded to be
+// raised when the list runs, as Mesa's compiled errors are.
+void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first) {
+  GLenum e = GL_NO_ERROR;
+  if (count < 0) e = GL_INVALID_VALUE;
+  else if (!valid_primitive(mode)) e = primitive_error(mode);
+  if (e != GL_NO_ERROR) return l.record<list_error>(e);
+  if (count == 0) return;
+  l.record<list_begin_draw>(mode);
+  for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
+  l.record<list_end_draw>();
+}
+
+
+// A compiled draw runs as glBegin, the elements' values, glEnd, but leaves the current values as
+// they were, as Mesa's playback of a compiled draw does (and as the draw itself would).
+void Context::begin_compiled_draw(GLenum mode) {
+  lists_.kept_normal = normal_, lists_.kept_color = color_, lists_.kept_texcoord = texcoord_;
+  Begin(mode);
+}
+
+void Context::end_compiled_draw() {
+  End();
+  restore({lists_.kept_normal, lists_.kept_color, lists_.kept_texcoord});
+}
+
+void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  GLenum e = GL_NO_ERROR;
+  if (count < 0) e = GL_INVALID_VALUE;
+  else if (!valid_primitive(mode)) e = primitive_error(mode);
+  // Mesa's compiled glDrawElements calls a bad index type GL_INVALID_VALUE (measured), where the
+  // draw itself says GL_INVALID_ENUM.
+  else if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) e = GL_INVALID_VALUE;
+  if (e != GL_NO_ERROR) return l.record<list_error>(e);
+  if (!indices) return;
+  std::vector<GLuint> names(static_cast<size_t>(count));
+  for (GLsizei k = 0; k < count; ++k)
+    names[k] = type == GL_UNSIGNED_BYTE    ? static_cast<const GLubyte*>(indices)[k]
+               : type == GL_UNSIGNED_SHORT ? static_cast<const GLushort*>(indices)[k]
+                                           : static_cast<const GLuint*>(indices)[k];
+  compile_elements(l, mode, count, names.data(), 0);
+}
+
+void Context::compile_element(DisplayList& l, GLint i) {
+  const Fixed f = element_fixed();
+  if (normal_array_.enabled && normal_array_.pointer) {
+    const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
+    l.record<list_normal>(n.x, n.y, n.z);
+  }
+  if (color_array_.enabled && color_array_.pointer) {
+    const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
+    l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
+  }
+  if (vertex_array_.enabled && vertex_array_.pointer) {
+    const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
+    l.record<list_vertex>(v.x, v.y, v.z, v.w);
+  }
+}
+
+}  // namespace ffc::state

@@ -1,0 +1,96 @@
+// Display lists (GL 2.1 section 5.4): a list is a compact byte vector of recorded commands, each
+// the address of a replay function followed by its arguments, packed by value.
+//
+// How an entry point becomes listable (the one rule): in src/state/soft_gl*.cpp, make the first
+// statement of the C entry point
+//
+//     void APIENTRY Foo(GLenum a, GLfloat b) { LISTABLE(Foo, a, b); FWD(Foo(a, b)); }
+//
+// LISTABLE records `Foo` with its arguments while a list is being compiled (and returns at once in
+// GL_COMPILE); replaying the list calls Foo(a, b) again, which then executes. The arguments must
+// be plain values: an entry point that takes a pointer copies what it points to first and records
+// a by-value twin (Color3fv calls Color3f; glMaterialfv records a Floats<4>). An entry point without
+// LISTABLE executes immediately even while compiling, which is what section 5.4 says of the
+// commands that are not compiled (glGenLists, glFeedbackBuffer, glRenderMode, glGet*, glFinish,
+// client state, array pointers, glReadPixels, glPixelStore ...).
+#pragma once
+#include <GL/gl.h>
+
+#include <cstring>
+#include <glm/glm.hpp>
+#include <map>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+namespace ffc::state {
+
+// N floats (or doubles) by value: a pointer argument's contents, recorded.
+template <int N, typename T = GLfloat>
+struct Floats {
+  T v[N];
+};
+
+class DisplayList {
+ public:
+  template <auto Fn, typename... A>
+  void record(const A&... a) {
+    put(&Command<Fn>::replay);
+    Command<Fn>::put(*this, a...);
+  }
+  void replay() const;
+  void clear() { bytes_.clear(); }
+  bool empty() const { return bytes_.empty(); }
+
+ private:
+  using Replay = const unsigned char* (*)(const unsigned char*);
+  template <typename T>
+  void put(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const size_t at = bytes_.size();
+    bytes_.resize(at + sizeof(T));
+    std::memcpy(bytes_.data() + at, &v, sizeof(T));
+  }
+  template <typename T>
+  static T take(const unsigned char*& p) {
+    T v;
+    std::memcpy(&v, p, sizeof(T));
+    p += sizeof(T);
+    return v;
+  }
+  template <auto Fn>
+  struct Command;
+  template <typename R, typename... P, R (*Fn)(P...)>
+  struct Command<Fn> {
+    template <typename... A>
+    static void put(DisplayList& l, const A&... a) {
+      (l.put(std::decay_t<P>(a)), ...);
+    }
+    static const unsigned char* replay(const unsigned char* p) {
+      // A braced list takes the arguments in order.
+      const std::tuple<std::decay_t<P>...> args{take<std::decay_t<P>>(p)...};
+      std::apply(Fn, args);
+      return p;
+    }
+  };
+  std::vector<unsigned char> bytes_;
+};
+
+// The lists of a context and the one being compiled (GL 2.1 table 6.39's state).
+struct ListState {
+  std::map<GLuint, DisplayList> lists;
+  DisplayList compiling;
+  GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none
+  GLenum mode = 0;   // GL_LIST_MODE: GL_COMPILE or GL_COMPILE_AND_EXECUTE; 0 when none
+  GLuint base = 0;   // GL_LIST_BASE
+  int depth = 0;     // lists being executed, one inside another
+  GLuint max_name = 0;  // the largest name the table has held (glGenLists gives out the next)
+  // The current values before a compiled draw, put back after it.
+  glm::dvec3 kept_normal{0, 0, 1};
+  glm::dvec4 kept_color{1, 1, 1, 1};
+  glm::vec4 kept_texcoord{0, 0, 0, 1};
+  // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
+  static constexpr int kMaxNesting = 64;
+};
+
+}  // namespace ffc::state
