@@ -2,9 +2,9 @@
  * (libglut.so.3.12): the glyphs of its bitmap and stroke fonts (exported as fgFont* / fgStroke*) and
  * the teapot, teacup and teaspoon control points (static arrays, found in the library's bytes by
  * their known first values). Data, not code: run by hand when the data must be checked again,
- *   cc -o dump tests/classic_glu/dump_freeglut_data.c -ldl && ./dump font > font_data.cpp
- *   ./dump teapot > teapot_data.h
- * The struct layouts below are freeglut's (fg_internal.h), as sized by `nm -S` (32 and 24 bytes). */
+ *   cc -o dump tests/classic_glu/dump_freeglut_data.c -ldl && ./dump font && ./dump teapot
+ * and compare with the body of namespace ffc::glut in font_data.cpp and teapot_data.h (the latter
+ * with its arrays marked inline). The struct layouts below are freeglut's (fg_internal.h), as sized by `nm -S` (32 and 24 bytes). */
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <stdio.h>

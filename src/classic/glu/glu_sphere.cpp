@@ -37,8 +37,8 @@ void normal(GLfloat sin_around, GLfloat cos_around, GLfloat sin_down, GLfloat co
   glNormal3f(sin_around * sin_down, cos_around * sin_down, cos_down);
 }
 
-// One polar cap as a triangle fan. `top`: the +z pole. The fan's rim is ring `rim`; its normals
-// use down-angle `down` (smooth) or the face centre `flat_down` (flat).
+// One polar cap as a triangle fan around the pole (`top`: the +z one), its rim the ring next to
+// the pole; rim normals take that ring's down angle (smooth) or the cap's face centre (flat).
 void cap(const GLUquadric *q, const Globe &g, GLdouble radius, bool top) {
   const GLint rim = top ? 1 : g.stacks - 1;
   const GLint pole = top ? 0 : g.stacks;
