@@ -245,7 +245,9 @@ void windowed_show(Window& w, const unsigned char* rgba) {
   ffcompat_surface_make_current(nullptr);
   glfwMakeContextCurrent(s.window);
   const Es2& g = s.gl;
-  int fw = 0, fh = 0;
+  int ww = 0, wh = 0, fw = 0, fh = 0;
+  glfwGetWindowSize(s.window, &ww, &wh);
+  if (ww != w.width || wh != w.height) glfwSetWindowSize(s.window, w.width, w.height);  // glutReshapeWindow
   glfwGetFramebufferSize(s.window, &fw, &fh);
   g.Viewport(0, 0, fw, fh);
   g.ClearColor(0, 0, 0, 1);
@@ -274,6 +276,10 @@ void windowed_wait(long long ms) {
 
 bool windowed_should_close() {
   return shown().window && glfwWindowShouldClose(shown().window);
+}
+
+void windowed_title(Window& w) {
+  if (shown().window && w.id == shown().glut_id) glfwSetWindowTitle(shown().window, w.title.c_str());
 }
 
 void windowed_close() {

@@ -71,7 +71,7 @@ struct State {
   bool ignore_key_repeat = false;
   int rendering_context = GLUT_USE_CURRENT_CONTEXT;
   int direct_rendering = GLUT_TRY_DIRECT_CONTEXT;
-  bool visualize_normals = false, stroke_join_dots = true, skip_stale_motion = false;
+  bool visualize_normals = false, skip_stale_motion = false;  // join dots: font.h
   int context_major = 1, context_minor = 0, context_flags = 0, context_profile = 0;
   int menu_font_unused = 0;
   // windows by id; ids start at 1 and are not reused
@@ -145,5 +145,6 @@ void windowed_poll();
 void windowed_wait(long long ms);
 bool windowed_should_close();
 void windowed_close();
+void windowed_title(Window& w);  // glutSetWindowTitle on the shown window
 
 }  // namespace ffc::glut

@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 
+#include "font.h"
 #include "glut_state.h"
 
 namespace ffc::glut {
@@ -193,7 +194,7 @@ void glutSetOption(GLenum what, int value) {
     case GLUT_AUX: case GLUT_MULTISAMPLE: break;  // no such buffers: accepted, as freeglut does
     case GLUT_SKIP_STALE_MOTION_EVENTS: s.skip_stale_motion = value != 0; break;
     case GLUT_GEOMETRY_VISUALIZE_NORMALS: s.visualize_normals = value != 0; break;
-    case GLUT_STROKE_FONT_DRAW_JOIN_DOTS: s.stroke_join_dots = value != 0; break;
+    case GLUT_STROKE_FONT_DRAW_JOIN_DOTS: stroke_font_draw_join_dots = value != 0; break;
     default: warning("glutSetOption(): missing enum handle %d", int(what));
   }
 }

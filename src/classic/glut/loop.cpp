@@ -14,8 +14,6 @@
 //     screen is exposed: every visible window is asked to redisplay, as a window manager does,
 //     so a program that draws only on demand still gives its N frames;
 //   - scripted input event i is delivered at the turn after frame i is shown.
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -88,7 +86,7 @@ Window* input_window() {
   return state().windows.empty() ? nullptr : state().windows.begin()->second.get();
 }
 
-void set_resize_default_viewport(Window& w) {
+void notify_size(Window& w) {
   if (w.reshape) w.reshape(w.width, w.height);
   else glViewport(0, 0, w.width, w.height);  // freeglut's default reshape
 }
@@ -124,7 +122,7 @@ void init_work(Window& w) {
   make_current(&w);
   w.init_work = false;
   if (w.position) w.position(w.x, w.y);
-  if (window_by_id(id)) set_resize_default_viewport(w);
+  if (window_by_id(id)) notify_size(w);
   if (window_by_id(id)) {
     if (w.window_status) w.window_status(GLUT_FULLY_RETAINED);
     else if (w.visibility) w.visibility(GLUT_VISIBLE);
@@ -142,14 +140,12 @@ void window_work(Window& w) {
   const int id = w.id;
   if (w.reshape_pending) {
     w.reshape_pending = false;
-    using ResizeFn = int (*)(ffcompat_surface*, int, int);
-    static ResizeFn resize = reinterpret_cast<ResizeFn>(dlsym(RTLD_DEFAULT, "ffcompat_surface_resize"));
-    if (resize && (w.wanted_width != w.width || w.wanted_height != w.height) &&
-        resize(w.surface, w.wanted_width, w.wanted_height) == 0) {
+    if ((w.wanted_width != w.width || w.wanted_height != w.height) &&
+        ffcompat_surface_resize(w.surface, w.wanted_width, w.wanted_height) == 0) {
       Window* saved = s.current;
       make_current(&w);
       w.width = w.wanted_width, w.height = w.wanted_height;
-      set_resize_default_viewport(w);
+      notify_size(w);
       if (!window_by_id(id)) return;
       w.redisplay = true;
       if (saved && window_by_id(saved->id)) make_current(saved);

@@ -4,6 +4,7 @@
 
 #include <cstring>
 
+#include "font.h"
 #include "glut_state.h"
 
 using namespace ffc::glut;
@@ -33,7 +34,7 @@ int glutGet(GLenum what) {
     case GLUT_DIRECT_RENDERING: return s.direct_rendering;
     case GLUT_SKIP_STALE_MOTION_EVENTS: return s.skip_stale_motion;
     case GLUT_GEOMETRY_VISUALIZE_NORMALS: return s.visualize_normals;
-    case GLUT_STROKE_FONT_DRAW_JOIN_DOTS: return s.stroke_join_dots;
+    case GLUT_STROKE_FONT_DRAW_JOIN_DOTS: return stroke_font_draw_join_dots;
     case GLUT_SCREEN_WIDTH: screen_size(&sw, &sh); return sw;
     case GLUT_SCREEN_HEIGHT: screen_size(&sw, &sh); return sh;
     // at 96 dots per inch

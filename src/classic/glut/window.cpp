@@ -1,6 +1,4 @@
 // Windows: each one an ffcompat_surface of libGL.so.1, made current by glutSetWindow.
-#include <dlfcn.h>
-
 #include <cstdio>
 #include <cstdlib>
 
@@ -35,22 +33,10 @@ void screen_size(int* w, int* h) {
 
 namespace {
 
-// A resize of a surface, if this libGL offers one (looked up, not linked, so that GLUT runs on a
-// libGL without it: the window then keeps its size, as under a window manager that refuses).
-using ResizeFn = int (*)(ffcompat_surface*, int, int);
-ResizeFn resize_fn() {
-  static ResizeFn fn = reinterpret_cast<ResizeFn>(dlsym(RTLD_DEFAULT, "ffcompat_surface_resize"));
-  return fn;
-}
-
 // Asks for a new size; the loop tells the program at its next turn (freeglut's GLUT_SIZE_WORK).
 void request_size(Window& w, int width, int height) {
   if (state().forced_size) return;  // FFCOMPAT_RUN_SIZE pins every window's size
   if (width <= 0 || height <= 0) return;
-  if (!resize_fn()) {
-    say_once("resizing a window", "this libGL's surfaces have a fixed size; the window keeps its size");
-    return;
-  }
   w.wanted_width = width, w.wanted_height = height, w.reshape_pending = true;
 }
 
@@ -128,7 +114,9 @@ int glutGetWindow(void) {
 }
 
 void glutSetWindowTitle(const char* title) {
-  current_window("glutSetWindowTitle").title = title ? title : "";
+  Window& w = current_window("glutSetWindowTitle");
+  w.title = title ? title : "";
+  if (windowed()) windowed_title(w);
 }
 
 void glutSetIconTitle(const char* title) {
