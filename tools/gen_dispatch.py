@@ -75,6 +75,7 @@ void Ortho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdoubl
 void PassThrough(GLfloat token)
 void PixelStorei(GLenum pname, GLint param)
 void PointSize(GLfloat size)
+void PolygonMode(GLenum face, GLenum mode)
 void PolygonOffset(GLfloat factor, GLfloat units)
 void PopMatrix(void)
 void PopName(void)

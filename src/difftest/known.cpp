@@ -19,6 +19,17 @@ bool any_call(const Stream& s, int upto, Pred pred) {
 
 bool is(const Call& c, const char* name) { return name_of(c) == name; }
 
+// Soft named deviation d while running the stream.
+bool named(const SideResult& soft, const char* d) {
+  return std::find(soft.deviations.begin(), soft.deviations.end(), d) != soft.deviations.end();
+}
+
+// What drawing shows: pictures, feedback, and the count glRenderMode returns.
+bool drawn(const Stream& s, const Mismatch& m) {
+  return m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
+         (m.kind == "return" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glRenderMode");
+}
+
 // The last call that can have caused m: a feedback buffer is written until the next
 // glFeedbackBuffer replaces it (-1: the end; one Mesa refused replaces nothing), other kinds show
 // at their call.
@@ -157,17 +168,17 @@ const std::vector<KnownDeviation>& known_deviations() {
       // Row 46: what was drawn or fed back, and the count glRenderMode returns.
       {"nonfinite-vertex", state::kNonfiniteVertex,
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         const bool kind = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
-                           (m.kind == "return" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glRenderMode");
-         return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kNonfiniteVertex) !=
-                            soft.deviations.end();
+         return drawn(s, m) && named(soft, state::kNonfiniteVertex);
+       }},
+      // Row 61: what was drawn or fed back, and the count glRenderMode returns.
+      {"unfilled-clipped", state::kUnfilledClipped,
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return drawn(s, m) && named(soft, state::kUnfilledClipped);
        }},
       // Row 55: what was drawn or fed back.
       {"zero-clip-vertex", state::kZeroClipVertex,
-       [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         const bool kind = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels";
-         return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kZeroClipVertex) !=
-                            soft.deviations.end();
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return drawn(s, m) && named(soft, state::kZeroClipVertex);
        }},
   };
   return v;

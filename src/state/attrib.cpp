@@ -29,6 +29,7 @@ struct Context::AttribEntry {
   float fog_density, fog_start, fog_end, fog_index;
   glm::vec4 fog_color;
   float offset_factor, offset_units;
+  GLenum polygon_mode[2];
   glm::ivec4 viewport;
   glm::dvec2 depth_range;
   glm::vec4 clear_color;
@@ -67,6 +68,7 @@ void Context::PushAttrib(GLbitfield mask) {
   e->fog_mode = fog_mode_, e->fog_coord_src = fog_coord_src_, e->fog_density = fog_density_;
   e->fog_start = fog_start_, e->fog_end = fog_end_, e->fog_index = fog_index_, e->fog_color = fog_color_;
   e->offset_factor = offset_factor_, e->offset_units = offset_units_;
+  e->polygon_mode[0] = polygon_mode_[0], e->polygon_mode[1] = polygon_mode_[1];
   e->viewport = viewport_, e->depth_range = depth_range_;
   e->clear_color = clear_color_, e->clear_depth = clear_depth_;
   e->normal = normal_, e->color = color_, e->flushed_color = flushed_color_;
@@ -149,6 +151,7 @@ void Context::PopAttrib() {
   if (m & GL_POLYGON_BIT) {
     cull_face_ = e->cull_face, cull_mode_ = e->cull_mode, front_face_ = e->front_face;
     offset_fill_ = e->offset_fill, offset_factor_ = e->offset_factor, offset_units_ = e->offset_units;
+    polygon_mode_[0] = e->polygon_mode[0], polygon_mode_[1] = e->polygon_mode[1];
     restore_enables({GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT});
   }
   if (m & GL_SCISSOR_BIT) frag_.scissor_test = e->frag.scissor_test, frag_.scissor_box = e->frag.scissor_box;

@@ -52,6 +52,9 @@ inline constexpr const char* kNonfiniteVertex =
 inline constexpr const char* kZeroClipVertex =
     "a vertex at clip coordinates (0, 0, 0, 0) in a line, quad or polygon: inside every clip plane, but its window "
     "position is 0 / 0 (undefined in GL); Mesa's clipper and rasterizer place it where soft does not";
+inline constexpr const char* kUnfilledClipped =
+    "glPolygonMode GL_LINE or GL_POINT on a triangle the view volume clips: Mesa clips the triangle and draws the "
+    "pieces of its edges that remain, zero-length ones too; soft clips each edge as a line";
 inline constexpr const char* kDrawPixelsFormat =
     "glDrawPixels with a format or type soft does not implement (depth, stencil, colour index, the integer and "
     "packed types): GL_INVALID_OPERATION and nothing drawn, where Mesa draws";
@@ -159,6 +162,7 @@ class Context {
   void PointSize(float size);
   void Fogfv(GLenum pname, const GLfloat* params);  // fog.cpp, as PolygonOffset
   void PolygonOffset(GLfloat factor, GLfloat units);
+  void PolygonMode(GLenum face, GLenum mode);  // polygon_mode.cpp
 
   void Begin(GLenum mode);
   void End();
@@ -351,6 +355,9 @@ class Context {
   float fog_density_ = 1, fog_start_ = 0, fog_end_ = 1, fog_index_ = 0;
   glm::vec4 fog_color_{0, 0, 0, 0};
   float offset_factor_ = 0, offset_units_ = 0;
+  // glPolygonMode: how front- and back-facing polygons are drawn (polygon_mode.cpp, primitive.cpp).
+  GLenum polygon_mode_[2] = {GL_FILL, GL_FILL};
+  bool unfilled() const { return polygon_mode_[0] != GL_FILL || polygon_mode_[1] != GL_FILL; }
   void fog_raster_state(raster::State& rs) const;
 
   // Transform

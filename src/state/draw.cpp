@@ -164,10 +164,10 @@ void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
 #endif
 
 bool Context::triangle_list_path(GLenum mode) const {
-  // Fog, polygon offset and the per-fragment operations are applied by the general path only
+  // Fog, polygon offset, the per-fragment operations and glPolygonMode are applied by the general path only
   // (raster/fragment_ops.cpp): the triangle list's kernels have none of them.
   return triangle_lists_ && mode == GL_TRIANGLES && render_mode_ == GL_RENDER && precision_ == Precision::Float &&
-         !fog_ && !offset_fill_ && fragment_ops_default();
+         !fog_ && !offset_fill_ && fragment_ops_default() && !unfilled();
 }
 
 void Context::draw_triangle_list(const uint32_t* indices, size_t triangles) {

@@ -70,6 +70,7 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     case GL_COLOR_MATERIAL_FACE: FFC_GET(double(cm_face_)); break;
     case GL_COLOR_MATERIAL_PARAMETER: FFC_GET(double(cm_mode_)); break;
     case GL_FRONT_FACE: FFC_GET(double(front_face_)); break;
+    case GL_POLYGON_MODE: FFC_GET(double(polygon_mode_[0]), double(polygon_mode_[1])); break;
     case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_)); break;
     case GL_DEPTH_FUNC: FFC_GET(double(depth_func_)); break;
     case GL_CURRENT_COLOR: vec4(color_, true); break;

@@ -31,13 +31,22 @@ class Assembly {
   void triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::vector<raster::Triangle>& out,
                 Scratch& scratch);
   void line_or_point(std::initializer_list<size_t> idx, size_t provoking, GLenum kind);
-  void emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind);
+  bool clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, const raster::Vertex& provoking, GLenum kind);
+  bool unfilled_triangle(const size_t v[3], size_t provoking);
+  void emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind, unsigned edges = 7, bool reset = true);
   void assemble(size_t n);
   void triangles_on_threads(size_t n);
 
   Context& c_;
   const raster::State rs_;
   const bool feedback_;
+  // Mesa's draw module runs its pipeline (feedback, glPolygonMode's unfilled stage): quads, quad
+  // strips and polygons take its decomposition.
+  const bool pipeline_ = feedback_ || c_.unfilled();
+  // The triangle being emitted: which of its edges (bit k: vertex k to k + 1) are edges of the
+  // polygon it comes from, and whether it starts a polygon (a new stipple pattern).
+  unsigned edges_ = 7;
+  bool reset_ = true;
   bool offset_stage_ = false;  // feedback through the offset stage of Mesa's draw module
   bool any_outside_ = false;   // a vertex of a whole primitive lies outside the view volume
   Scratch scratch_;
@@ -59,7 +68,8 @@ void Assembly::run() {
                                 c_.enabled_state(GL_POLYGON_OFFSET_POINT) == 1);
   if (c_.prim_mode_ >= GL_TRIANGLES) map_inside();
   const size_t n = c_.elements_.empty() ? c_.verts_.size() : c_.elements_.size();
-  if (c_.prim_mode_ == GL_TRIANGLES && !feedback_ && c_.threads_ > 1 && n >= 3 * 4096) return triangles_on_threads(n);
+  if (c_.prim_mode_ == GL_TRIANGLES && !feedback_ && !c_.unfilled() && c_.threads_ > 1 && n >= 3 * 4096)
+    return triangles_on_threads(n);
   assemble(n);
   const std::vector<raster::Triangle>* list = &c_.triangles_;
   if (!c_.triangles_.empty()) {
@@ -114,6 +124,7 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
   const std::vector<raster::Vertex>& verts = c_.verts_;
   const std::vector<raster::WindowVertex>& window = c_.window_;
   const size_t v[3] = {index(i0), index(i1), index(i2)};
+  if (c_.unfilled() && unfilled_triangle(v, provoking)) return;
   if ((c_.outside_[v[0]] | c_.outside_[v[1]] | c_.outside_[v[2]]) == 0) {
     const bool back = raster::back_facing_triangle(verts[v[0]].clip, verts[v[1]].clip, verts[v[2]].clip, rs_);
     if (raster::culled(back, rs_)) return;
@@ -152,24 +163,72 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
 
 // A line or a point, clipped (a point as a degenerate line) and drawn at once, or fed back.
 void Assembly::line_or_point(std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+  const size_t* i = idx.begin();
+  clip_and_draw(at(i[0]), at(kind == GL_POINT_TOKEN ? i[0] : i[1]), at(provoking), kind);
+}
+
+// False: nothing of it lies inside the view volume.
+bool Assembly::clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, const raster::Vertex& provoking,
+                             GLenum kind) {
   prim_.clear();
-  for (size_t k : idx) prim_.push_back(at(k));
-  const bool is_point = kind == GL_POINT_TOKEN;
-  if (is_point) prim_.push_back(prim_[0]);
+  prim_.push_back(a);
+  prim_.push_back(b);
   // Feedback reports each vertex's own colour (Mesa does not flatten there), but for the ends
   // that clipping makes (clip_and_map).
   raster::ClipTemps* temps = feedback_ ? &c_.clip_temps_ : nullptr;
-  const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &at(provoking), true, nullptr, temps);
+  const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &provoking, true, nullptr, temps);
   if (feedback_ && c_.render_mode_ == GL_FEEDBACK && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
-  if (w.empty()) return;
-  if (feedback_) return c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
+  if (w.empty()) return false;
+  if (feedback_) {
+    c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
+    return true;
+  }
   c_.flush_clear();
-  if (is_point) raster::draw_point(c_.fb_, w[0], rs_);
+  if (kind == GL_POINT_TOKEN) raster::draw_point(c_.fb_, w[0], rs_);
   else raster::draw_line(c_.fb_, w[0], w[1], rs_);
+  return true;
 }
 
-void Assembly::emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind) {
+// glPolygonMode GL_LINE or GL_POINT for the triangle's facing: its polygon's edges (edges_) as
+// lines, or their first vertices as points, in the order of Mesa's unfilled stage (measured in
+// feedback: the edge from vertex 2 to 0 first, then 0 to 1, 1 to 2; points 0, 1, 2), the first
+// line of a polygon a GL_LINE_RESET_TOKEN. Culling, flat shading and the two-sided colours come
+// first, as in Mesa's pipeline. False: the face is filled (the caller goes on). The lines are
+// clipped one by one where Mesa clips the triangle first and draws the pieces of its edges that
+// remain (zero-length ones too): named when a triangle is clipped (kUnfilledClipped).
+bool Assembly::unfilled_triangle(const size_t v[3], size_t provoking) {
+  const std::vector<raster::Vertex>& verts = c_.verts_;
+  const bool back = raster::back_facing_triangle(verts[v[0]].clip, verts[v[1]].clip, verts[v[2]].clip, rs_);
+  if (raster::culled(back, rs_)) return true;
+  const GLenum mode = c_.polygon_mode_[back ? 1 : 0];
+  if (mode == GL_FILL) return false;
+  if (c_.outside_[v[0]] | c_.outside_[v[1]] | c_.outside_[v[2]]) c_.deviations_.insert(kUnfilledClipped);
+  const bool use_back = back && rs_.two_side;
+  raster::Vertex corner[3];
+  for (int k = 0; k < 3; ++k) {
+    corner[k] = verts[v[k]];
+    const raster::Vertex& src = rs_.flat ? at(provoking) : verts[v[k]];
+    corner[k].front = use_back ? src.back : src.front;
+    corner[k].front_sec = use_back ? src.back_sec : src.front_sec;
+  }
+  if (mode == GL_POINT) {
+    for (int k = 0; k < 3; ++k)
+      if (edges_ & (1u << k)) clip_and_draw(corner[k], corner[k], corner[k], GL_POINT_TOKEN);
+    return true;
+  }
+  if (reset_) raster::reset_stipple(rs_);
+  bool reset = reset_;  // the reset token goes with the first line that comes out
+  for (int k : {2, 0, 1}) {
+    if (!(edges_ & (1u << k))) continue;
+    const raster::Vertex& b = corner[(k + 1) % 3];
+    if (clip_and_draw(corner[k], b, b, reset ? GL_LINE_RESET_TOKEN : GL_LINE_TOKEN)) reset = false;
+  }
+  return true;
+}
+
+void Assembly::emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind, unsigned edges, bool reset) {
   const size_t* i = idx.begin();
+  edges_ = edges, reset_ = reset;
   if (kind == GL_POLYGON_TOKEN) return triangle(i[0], i[1], i[2], provoking, c_.triangles_, scratch_);
   line_or_point(idx, provoking, kind);
 }
@@ -212,9 +271,9 @@ void Assembly::assemble(size_t n) {
     // polygons from elements split as from arrays).
     case GL_QUADS:  // the 4th vertex provokes
       for (size_t i = 0; i + 3 < n; i += 4) {
-        if (feedback_ || rs_.flat || any_outside_ || !c_.elements_.empty()) {
-          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
-          emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        if (pipeline_ || rs_.flat || any_outside_ || !c_.elements_.empty()) {  // edges: the quad's
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN, 0b101, true);
+          emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN, 0b011, false);
         } else {
           emit({i, i + 1, i + 2}, i + 3, GL_POLYGON_TOKEN);
           emit({i, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN);
@@ -223,9 +282,9 @@ void Assembly::assemble(size_t n) {
       break;
     case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2), as Mesa's feedback (2i+2, 2i, 2i+1, 2i+3); 2i+3 provokes
       for (size_t i = 0; i + 3 < n; i += 2) {
-        if (feedback_ || any_outside_) {
-          emit({i + 2, i, i + 3}, i + 3, GL_POLYGON_TOKEN);
-          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
+        if (pipeline_ || any_outside_) {
+          emit({i + 2, i, i + 3}, i + 3, GL_POLYGON_TOKEN, 0b101, true);
+          emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN, 0b011, false);
         } else {
           emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN);
           emit({i, i + 3, i + 2}, i + 3, GL_POLYGON_TOKEN);
@@ -234,7 +293,8 @@ void Assembly::assemble(size_t n) {
       break;
     case GL_POLYGON:  // a fan from the first vertex, which provokes
       for (size_t i = 1; i + 1 < n; ++i)
-        if (feedback_) emit({i, i + 1, 0}, 0, GL_POLYGON_TOKEN);
+        if (pipeline_)  // the polygon's edges: (i, i + 1), and its first and last to vertex 0
+          emit({i, i + 1, 0}, 0, GL_POLYGON_TOKEN, 1u | (i + 2 == n ? 2u : 0u) | (i == 1 ? 4u : 0u), i == 1);
         else emit({0, i, i + 1}, 0, GL_POLYGON_TOKEN);
       break;
   }

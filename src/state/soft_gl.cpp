@@ -182,6 +182,7 @@ void APIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, 
 void APIENTRY PixelStorei(GLenum p, GLint v) { FWD(PixelStorei(p, v)); }
 void APIENTRY PointSize(GLfloat s) { LISTABLE(PointSize, s); FWD(PointSize(s)); }
 void APIENTRY PolygonOffset(GLfloat f, GLfloat u) { LISTABLE(PolygonOffset, f, u); FWD(PolygonOffset(f, u)); }
+void APIENTRY PolygonMode(GLenum f, GLenum m) { LISTABLE(PolygonMode, f, m); FWD(PolygonMode(f, m)); }
 void APIENTRY PopMatrix() { LISTABLE(PopMatrix); FWD(PopMatrix()); }
 void APIENTRY PushMatrix() { LISTABLE(PushMatrix); FWD(PushMatrix()); }
 void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }
