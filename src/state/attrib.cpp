@@ -37,13 +37,17 @@ struct Context::AttribEntry {
   glm::dvec3 normal;
   glm::dvec4 color, flushed_color;
   RasterPosition raster_pos;
+  glm::vec4 texcoord;  // with the edge flag: GL_CURRENT_BIT
+  bool edge_flag;
+  std::map<GLenum, GLenum> hints;  // GL_HINT_BIT
+  GLuint list_base;                // GL_LIST_BIT
 };
 
 struct Context::ClientAttribEntry {
   GLbitfield mask;
   GLint pack_alignment, unpack_alignment;
   std::map<GLenum, GLint> pixel_store;
-  ClientArray vertex_array, normal_array, color_array;
+  ClientArray vertex_array, normal_array, color_array, texcoord_array;
   std::map<GLenum, bool> other_enables;
 };
 
@@ -73,6 +77,7 @@ void Context::PushAttrib(GLbitfield mask) {
   e->clear_color = clear_color_, e->clear_depth = clear_depth_;
   e->normal = normal_, e->color = color_, e->flushed_color = flushed_color_;
   e->raster_pos = raster_pos_;
+  e->texcoord = texcoord_, e->edge_flag = edge_flag_, e->hints = hints_, e->list_base = lists_.base;
   attrib_stack_.push_back(std::move(e));
 }
 
@@ -94,7 +99,10 @@ void Context::PopAttrib() {
   if (m & GL_CURRENT_BIT) {
     normal_ = e->normal, color_ = e->color, flushed_color_ = e->flushed_color;
     raster_pos_ = e->raster_pos;
+    texcoord_ = e->texcoord, edge_flag_ = e->edge_flag;
   }
+  if (m & GL_HINT_BIT) hints_ = e->hints;
+  if (m & GL_LIST_BIT) lists_.base = e->list_base;
   if (m & GL_ENABLE_BIT) {
     const bool was_color_material = color_material_;
     lighting_ = e->lighting, normalize_ = e->normalize, rescale_normal_ = e->rescale_normal;
@@ -171,6 +179,7 @@ void Context::PushClientAttrib(GLbitfield mask) {
   e->mask = mask;
   e->pack_alignment = pack_alignment_, e->unpack_alignment = unpack_alignment_, e->pixel_store = pixel_store_;
   e->vertex_array = vertex_array_, e->normal_array = normal_array_, e->color_array = color_array_;
+  e->texcoord_array = texcoord_array_;
   e->other_enables = other_enables_;
   client_attrib_stack_.push_back(std::move(e));
 }
@@ -184,6 +193,7 @@ void Context::PopClientAttrib() {
     pack_alignment_ = e->pack_alignment, unpack_alignment_ = e->unpack_alignment, pixel_store_ = e->pixel_store;
   if (e->mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
     vertex_array_ = e->vertex_array, normal_array_ = e->normal_array, color_array_ = e->color_array;
+    texcoord_array_ = e->texcoord_array;
     for (GLenum n : {GLenum(GL_TEXTURE_COORD_ARRAY), GLenum(GL_INDEX_ARRAY), GLenum(GL_EDGE_FLAG_ARRAY),
                      GLenum(GL_FOG_COORD_ARRAY), GLenum(GL_SECONDARY_COLOR_ARRAY)}) {
       const auto it = e->other_enables.find(n);
