@@ -3,6 +3,14 @@
 dispatch loads. Edit FUNCS and rerun; the header's #defines and the X-macro come from it."""
 import re, pathlib
 FUNCS = """
+void GetLightiv(GLenum light, GLenum pname, GLint *params)
+void GetMaterialiv(GLenum face, GLenum pname, GLint *params)
+void PixelStoref(GLenum pname, GLfloat param)
+void DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const GLvoid *indices)
+void LoadTransposeMatrixd(const GLdouble *m)
+void LoadTransposeMatrixf(const GLfloat *m)
+void MultTransposeMatrixd(const GLdouble *m)
+void MultTransposeMatrixf(const GLfloat *m)
 void ArrayElement(GLint i)
 void Begin(GLenum mode)
 void CallList(GLuint list)
@@ -128,6 +136,7 @@ VARIANTS = (family("Vertex", [2, 3, 4], "sifd", "xyzw")
             + family("Color", [3, 4], ["b", "s", "i", "f", "d", "ub", "us", "ui"],
                      ["red", "green", "blue", "alpha"])
             + family("TexCoord", [1, 2, 3, 4], "sifd", "strq")
+            + family("RasterPos", [2, 3, 4], "sifd", "xyzw")
             + [f"void Rect{s}({TYPES[s]} x1, {TYPES[s]} y1, {TYPES[s]} x2, {TYPES[s]} y2)" for s in "sifd"]
             + [f"void Rect{s}v(const {TYPES[s]} *v1, const {TYPES[s]} *v2)" for s in "sifd"])
 rows = []

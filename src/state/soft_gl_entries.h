@@ -16,6 +16,10 @@ namespace ffc::state::entry {
 
 inline Context* C() { return Context::current(); }
 
+// The by-value twins of glLoadMatrix and glMultMatrix that lists record (soft_gl.cpp).
+void APIENTRY LoadMatrixValues(Floats<16, GLdouble> m);
+void APIENTRY MultMatrixValues(Floats<16, GLdouble> m);
+
 // Records the call `Fn(a...)` into the list being compiled, if any; true when it must not also
 // execute now (GL_COMPILE).
 template <auto Fn, typename... A>
