@@ -170,12 +170,12 @@ const std::vector<KnownDeviation>& known_deviations() {
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          return drawn(s, m) && named(soft, state::kNonfiniteVertex);
        }},
-      // Row 61: what was drawn or fed back, and the count glRenderMode returns.
+      // Row 62: what was drawn or fed back, and the count glRenderMode returns.
       {"unfilled-clipped", state::kUnfilledClipped,
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          return drawn(s, m) && named(soft, state::kUnfilledClipped);
        }},
-      // Row 55: what was drawn or fed back.
+      // Row 56: what was drawn or fed back.
       {"zero-clip-vertex", state::kZeroClipVertex,
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          return drawn(s, m) && named(soft, state::kZeroClipVertex);

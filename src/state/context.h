@@ -197,9 +197,18 @@ class Context {
   // a recorded call also executes (GL_COMPILE_AND_EXECUTE).
   DisplayList* list_recording();
   bool list_executes() const { return lists_.mode == GL_COMPILE_AND_EXECUTE; }
+  DisplayList& list_held_back() { return lists_.held_back; }
+  void run_held_back(bool new_format = true);  // executes the vertex-stream calls GL_COMPILE_AND_EXECUTE held back
+  void hold_back(int kind);  // a vertex-stream call is held back (kind: see compiled_only)
+  ListState& list_state() { return lists_; }
+  void record_list_error(GLenum e);  // a compile error: recorded, and raised now in GL_COMPILE_AND_EXECUTE
   // Vertex-array draws while compiling, dereferenced (indices null: first .. first + count - 1).
-  void compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first);
-  void compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices);
+  // keep_current: leave the current values as they were (a compiled draw played back); false for
+  // the draws GL_COMPILE_AND_EXECUTE holds back, which set them as glArrayElement would (measured).
+  void compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first,
+                        bool keep_current = true);
+  void compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices,
+                             bool keep_current = true);
   void compile_element(DisplayList& l, GLint i);
   void begin_compiled_draw(GLenum mode);
   void end_compiled_draw();

@@ -29,6 +29,12 @@ void list_color(double r, double g, double b, double a, int components) {
 void list_vertex(double x, double y, double z, double w) {
   if (Context* c = Context::current()) c->Vertex(x, y, z, w);
 }
+void list_begin(GLenum mode) {
+  if (Context* c = Context::current()) c->Begin(mode);
+}
+void list_end() {
+  if (Context* c = Context::current()) c->End();
+}
 void list_begin_draw(GLenum mode) {
   if (Context* c = Context::current()) c->begin_compiled_draw(mode);
 }
@@ -39,6 +45,30 @@ void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
 }  // namespace
+
+void Context::run_held_back(bool new_format) {
+  if (new_format) lists_.attributes = 0;
+  lists_.vertices = 0;
+  if (lists_.held_back.empty()) return;
+  ++lists_.depth;  // nothing recorded while they run
+  lists_.held_back.replay();
+  --lists_.depth;
+  lists_.held_back.clear();
+}
+
+// An attribute that first appears after a vertex of an open primitive grows Mesa's vertex format:
+// the vertices so far are drawn first (the primitive stays open on the executing side).
+void Context::hold_back(int kind) {
+  if (kind < 0) return void(++lists_.vertices);
+  if (kind == 0) return;
+  if (lists_.open && lists_.vertices > 0 && !(lists_.attributes & kind)) run_held_back(false);
+  lists_.attributes |= kind;
+}
+
+void Context::record_list_error(GLenum e) {
+  lists_.compiling.record<list_error>(e);
+  if (lists_.mode == GL_COMPILE_AND_EXECUTE) error(e);
+}
 
 DisplayList* Context::list_recording() {
   return lists_.mode != 0 && lists_.depth == 0 ? &lists_.compiling : nullptr;
@@ -76,11 +106,14 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.index = list;
   lists_.mode = mode;
   lists_.compiling.clear();
+  lists_.held_back.clear();
+  lists_.open = false, lists_.vertices = 0, lists_.attributes = 0;
 }
 
 void Context::EndList() {
   if (!outside_begin_end()) return;
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
+  run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
   lists_.max_name = std::max(lists_.max_name, lists_.index);
@@ -134,6 +167,7 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   if (DisplayList* l = list_recording()) {
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
     if (lists_.mode == GL_COMPILE) return;
+    run_held_back();
   }
   const GLuint base = lists_.base;
   for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
@@ -166,15 +200,16 @@ int Context::list_values(GLenum pname, GLdouble* out) {
 // glBegin / glNormal / glColor / glVertex / glEnd calls that glArrayElement would make, so the
 // list does not depend on the arrays later (section 5.4). The draw's own errors are recorded to be
 // raised when the list runs, as Mesa's compiled errors are.
-void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first) {
+void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first,
+                               bool keep_current) {
   GLenum e = GL_NO_ERROR;
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
   if (e != GL_NO_ERROR) return l.record<list_error>(e);
   if (count == 0) return;
-  l.record<list_begin_draw>(mode);
+  keep_current ? l.record<list_begin_draw>(mode) : l.record<list_begin>(mode);
   for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
-  l.record<list_end_draw>();
+  keep_current ? l.record<list_end_draw>() : l.record<list_end>();
 }
 
 
@@ -190,7 +225,8 @@ void Context::end_compiled_draw() {
   restore({lists_.kept_normal, lists_.kept_color, lists_.kept_texcoord});
 }
 
-void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices,
+                                    bool keep_current) {
   GLenum e = GL_NO_ERROR;
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
@@ -204,7 +240,7 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
     names[k] = type == GL_UNSIGNED_BYTE    ? static_cast<const GLubyte*>(indices)[k]
                : type == GL_UNSIGNED_SHORT ? static_cast<const GLushort*>(indices)[k]
                                            : static_cast<const GLuint*>(indices)[k];
-  compile_elements(l, mode, count, names.data(), 0);
+  compile_elements(l, mode, count, names.data(), 0, keep_current);
 }
 
 void Context::compile_element(DisplayList& l, GLint i) {

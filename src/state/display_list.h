@@ -2,7 +2,8 @@
 // the address of a replay function followed by its arguments, packed by value.
 //
 // How an entry point becomes listable (the one rule): in src/state/soft_gl*.cpp, make the first
-// statement of the C entry point
+// statement of the C entry point (LISTABLE_VERTEX instead for a call of the vertex stream, which
+// GL_COMPILE_AND_EXECUTE holds back: soft_gl_entries.h)
 //
 //     void APIENTRY Foo(GLenum a, GLfloat b) { LISTABLE(Foo, a, b); FWD(Foo(a, b)); }
 //
@@ -92,6 +93,10 @@ class DisplayList {
 struct ListState {
   std::map<GLuint, DisplayList> lists;
   DisplayList compiling;
+  DisplayList held_back;  // GL_COMPILE_AND_EXECUTE: vertex-stream calls recorded, not yet executed
+  bool open = false;       // a glBegin compiled into the list, its glEnd not yet
+  int vertices = 0;        // held back since the open glBegin
+  int attributes = 0;      // attributes in the held-back vertex format (bits: normal, colour, texture, edge)
   GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none
   GLenum mode = 0;   // GL_LIST_MODE: GL_COMPILE or GL_COMPILE_AND_EXECUTE; 0 when none
   GLuint base = 0;   // GL_LIST_BASE

@@ -44,16 +44,13 @@ void Context::SelectBuffer(GLsizei size, GLuint* buffer) {
 }
 
 // The name stack calls do nothing outside selection mode; inside it, a pending hit is written
-// before the stack changes.
-bool Context::name_stack_call() {
-  if (!outside_begin_end()) return false;
-  if (render_mode_ != GL_SELECT) return false;
-  if (select_.hit) write_hit();
-  return true;
-}
+// before the stack changes, and not when the call is an error (measured for glLoadName and
+// glPopName).
+bool Context::name_stack_call() { return outside_begin_end() && render_mode_ == GL_SELECT; }
 
 void Context::InitNames() {
   if (!name_stack_call()) return;
+  if (select_.hit) write_hit();
   select_.names.clear();
   select_.min_z = 1, select_.max_z = -1;
 }
@@ -61,18 +58,21 @@ void Context::InitNames() {
 void Context::LoadName(GLuint name) {
   if (!name_stack_call()) return;
   if (select_.names.empty()) return error(GL_INVALID_OPERATION);
+  if (select_.hit) write_hit();
   select_.names.back() = name;
 }
 
 void Context::PushName(GLuint name) {
   if (!name_stack_call()) return;
   if (select_.names.size() >= SelectState::kMaxDepth) return error(GL_STACK_OVERFLOW);
+  if (select_.hit) write_hit();
   select_.names.push_back(name);
 }
 
 void Context::PopName() {
   if (!name_stack_call()) return;
   if (select_.names.empty()) return error(GL_STACK_UNDERFLOW);
+  if (select_.hit) write_hit();
   select_.names.pop_back();
 }
 

@@ -19,11 +19,12 @@ void APIENTRY ArrayElement(GLint i) {
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     if (i >= 0) c->compile_element(*l, i);
-    if (!c->list_executes()) return;
+    if (c->list_executes() && i >= 0) c->compile_element(c->list_held_back(), i);  // held back
+    return;
   }
   c->ArrayElement(i);
 }
-void APIENTRY Begin(GLenum m) { LISTABLE(Begin, m); FWD(Begin(m)); }
+void APIENTRY Begin(GLenum m) { LISTABLE_VERTEX(Begin, m); FWD(Begin(m)); }
 void APIENTRY Clear(GLbitfield m) { LISTABLE(Clear, m); FWD(Clear(m)); }
 void APIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { LISTABLE(ClearColor, r, g, b, a); FWD(ClearColor(r, g, b, a)); }
 void APIENTRY ClearDepth(GLclampd d) { LISTABLE(ClearDepth, d); FWD(ClearDepth(d)); }
@@ -39,7 +40,8 @@ void APIENTRY DrawArrays(GLenum m, GLint f, GLsizei n) {
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     c->compile_elements(*l, m, n, nullptr, f);
-    if (!c->list_executes()) return;
+    if (c->list_executes()) c->compile_elements(c->list_held_back(), m, n, nullptr, f, false);  // held back
+    return;
   }
   c->DrawArrays(m, f, n);
 }
@@ -48,13 +50,14 @@ void APIENTRY DrawElements(GLenum m, GLsizei n, GLenum t, const GLvoid* i) {
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     c->compile_draw_elements(*l, m, n, t, i);
-    if (!c->list_executes()) return;
+    if (c->list_executes()) c->compile_draw_elements(c->list_held_back(), m, n, t, i, false);  // held back
+    return;
   }
   c->DrawElements(m, n, t, i);
 }
 void APIENTRY Enable(GLenum c) { LISTABLE(Enable, c); FWD(Enable(c)); }
 void APIENTRY EnableClientState(GLenum a) { FWD(EnableClientState(a)); }
-void APIENTRY End() { LISTABLE(End); FWD(End()); }
+void APIENTRY End() { LISTABLE_VERTEX(End); FWD(End()); }
 void APIENTRY FeedbackBuffer(GLsizei s, GLenum t, GLfloat* b) { FWD(FeedbackBuffer(s, t, b)); }
 void APIENTRY Finish() { FWD(Finish()); }
 void APIENTRY Flush() { FWD(Flush()); }
@@ -126,7 +129,7 @@ int material_param_count(GLenum p) {
   return 0;
 }
 void APIENTRY MaterialValues(GLenum face, GLenum p, Floats<4> v) {
-  LISTABLE(MaterialValues, face, p, v);
+  LISTABLE_MATERIAL(MaterialValues, face, p, v);
   FWD(Materialfv(face, p, v.v));
 }
 // glLightModeliv and glMaterialiv convert as Mesa's do (light.c, api_loopback.c): colours map
@@ -202,7 +205,21 @@ void APIENTRY VertexPointer(GLint s, GLenum t, GLsizei st, const GLvoid* p) { FW
 void APIENTRY Viewport(GLint x, GLint y, GLsizei w, GLsizei h) { LISTABLE(Viewport, x, y, w, h); FWD(Viewport(x, y, w, h)); }
 // Display lists (display_list.cpp). glCallList and glListBase compile; glCallLists records its
 // names itself; the others execute at once.
-void APIENTRY CallList(GLuint l) { LISTABLE(CallList, l); FWD(CallList(l)); }
+// glCallList flushes what GL_COMPILE_AND_EXECUTE held back (soft_gl_entries.h), but not inside the
+// list's open glBegin (measured), and executes. List 0 is GL_INVALID_VALUE when called, but
+// compiled it does nothing (Mesa).
+void APIENTRY CallListRecorded(GLuint l) { FWD(CallList(l)); }
+void APIENTRY CallList(GLuint l) {
+  Context* c = C();
+  if (!c) return;
+  if (DisplayList* rec = c->list_recording()) {
+    rec->record<CallListRecorded>(l);
+    if (!c->list_executes()) return;
+    if (!c->list_state().open) c->run_held_back();
+  }
+  if (l == 0) return c->record_error(GL_INVALID_VALUE);
+  c->CallList(l);
+}
 void APIENTRY CallLists(GLsizei n, GLenum t, const GLvoid* l) { FWD(CallLists(n, t, l)); }
 void APIENTRY DeleteLists(GLuint l, GLsizei r) { FWD(DeleteLists(l, r)); }
 void APIENTRY EndList() { FWD(EndList()); }

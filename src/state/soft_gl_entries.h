@@ -5,6 +5,8 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <type_traits>
+
 #include "state/context.h"
 #include "state/display_list.h"
 
@@ -13,6 +15,11 @@ namespace ffc::state::entry {
 #define FFC_GL_FUNCTION(ret, fn, params) ret APIENTRY fn params;
 #include "gl/gl_functions.inc"
 #undef FFC_GL_FUNCTION
+// The by-value calls the immediate-mode variants end in (soft_gl_immediate.cpp).
+void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z);
+void APIENTRY ColorValues(GLdouble r, GLdouble g, GLdouble b, GLdouble a, GLint components);
+void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q);
 
 inline Context* C() { return Context::current(); }
 
@@ -20,21 +27,67 @@ inline Context* C() { return Context::current(); }
 void APIENTRY LoadMatrixValues(Floats<16, GLdouble> m);
 void APIENTRY MultMatrixValues(Floats<16, GLdouble> m);
 
-// Records the call `Fn(a...)` into the list being compiled, if any; true when it must not also
-// execute now (GL_COMPILE).
-template <auto Fn, typename... A>
+// How a listable call compiles, as Mesa's lists do. While the list's own glBegin is open (one
+// compiled and its glEnd not yet), a state call is not recorded: an error is, raised when the list
+// runs, and at once in GL_COMPILE_AND_EXECUTE (Mesa's compile errors). In GL_COMPILE_AND_EXECUTE a
+// state call first executes the vertex-stream calls held back, then itself; a vertex-stream call
+// (glBegin, glVertex, glColor ...) is held back: Mesa's list keeps those vertices in its vertex
+// store and draws them at its next flush, which also comes when an attribute first appears after
+// a vertex of an open primitive (its vertex format grows); glMaterialfv and glMaterialiv execute
+// at once without that flush, where glMaterialf and glMateriali are state calls (glCallList:
+// soft_gl.cpp). Measured: docs/deviations.md row 50.
+enum class ListKind { State, Vertex, Material };
+
+// Whether two entry points are the same one (of any signatures).
+template <auto F, auto G>
+constexpr bool same_entry() {
+  if constexpr (std::is_same_v<decltype(F), decltype(G)>) return F == G;
+  else return false;
+}
+
+template <ListKind K, auto Fn, typename... A>
 bool compiled_only(const A&... a) {
   Context* c = C();
   DisplayList* l = c ? c->list_recording() : nullptr;
   if (!l) return false;
+  ListState& ls = c->list_state();
+  if (K == ListKind::State && ls.open) {
+    c->record_list_error(GL_INVALID_OPERATION);
+    return true;
+  }
+  if constexpr (K == ListKind::Vertex) {
+    if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0;
+    if constexpr (same_entry<Fn, &End>()) {
+      // A glEnd without its glBegin in the list: Mesa records it and executes nothing now.
+      if (!ls.open) return l->record<Fn>(a...), true;
+      ls.open = false;
+    }
+  }
   l->record<Fn>(a...);
-  return !c->list_executes();
+  if (!c->list_executes()) return true;
+  if constexpr (K == ListKind::Vertex) {
+    int kind = 0;  // what enters Mesa's vertex format: a vertex (-1), an attribute (a bit), or neither
+    if constexpr (same_entry<Fn, &VertexValues>()) kind = -1;
+    if constexpr (same_entry<Fn, &NormalValues>()) kind = 1;
+    if constexpr (same_entry<Fn, &ColorValues>()) kind = 2;
+    if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
+    if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
+    c->hold_back(kind);
+    c->list_held_back().record<Fn>(a...);
+    return true;
+  }
+  if constexpr (K == ListKind::State) c->run_held_back();
+  return false;
 }
 
 }  // namespace ffc::state::entry
 
-// The first statement of a listable entry point: LISTABLE(Name, its arguments by value...).
-#define LISTABLE(fn, ...)                                                  \
-  do {                                                                     \
-    if (::ffc::state::entry::compiled_only<fn>(__VA_ARGS__)) return;       \
+// The first statement of a listable entry point: LISTABLE(Name, its arguments by value...);
+// LISTABLE_VERTEX for the vertex stream, LISTABLE_MATERIAL for glMaterialfv (see ListKind).
+#define FFC_LISTABLE(kind, fn, ...)                                                                  \
+  do {                                                                                               \
+    if (::ffc::state::entry::compiled_only<::ffc::state::entry::ListKind::kind, fn>(__VA_ARGS__)) return; \
   } while (0)
+#define LISTABLE(fn, ...) FFC_LISTABLE(State, fn, __VA_ARGS__)
+#define LISTABLE_VERTEX(fn, ...) FFC_LISTABLE(Vertex, fn, __VA_ARGS__)
+#define LISTABLE_MATERIAL(fn, ...) FFC_LISTABLE(Material, fn, __VA_ARGS__)

@@ -36,7 +36,7 @@ void APIENTRY Bitmap(GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, G
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     const PackedBits bits = l->keep(c->pack_bitmap(w, h, b));
-    if (compiled_only<PackedBitmap>(w, h, xo, yo, xm, ym, bits)) return;
+    if (compiled_only<ListKind::State, PackedBitmap>(w, h, xo, yo, xm, ym, bits)) return;
     return c->Bitmap(w, h, xo, yo, xm, ym, bits.data, true);
   }
   c->Bitmap(w, h, xo, yo, xm, ym, b, false);

@@ -26,22 +26,22 @@ GLfloat unit(GLdouble c) { return GLfloat(c); }
 
 // The by-value calls that every variant ends in, and that lists record.
 void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w) {
-  LISTABLE(VertexValues, x, y, z, w);
+  LISTABLE_VERTEX(VertexValues, x, y, z, w);
   if (Context* c = C()) c->Vertex(x, y, z, w);
 }
 void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z) {
-  LISTABLE(NormalValues, x, y, z);
+  LISTABLE_VERTEX(NormalValues, x, y, z);
   if (Context* c = C()) c->Normal(x, y, z);
 }
 // `components`: 3 for glColor3f/glColor3fv only. Mesa's vbo takes every other glColor3 (the integer
 // and double ones) as a 4-component colour with alpha 1, so it never keeps an old alpha
 // (Context::Color).
 void APIENTRY ColorValues(GLdouble r, GLdouble g, GLdouble b, GLdouble a, GLint components) {
-  LISTABLE(ColorValues, r, g, b, a, components);
+  LISTABLE_VERTEX(ColorValues, r, g, b, a, components);
   if (Context* c = C()) c->Color(r, g, b, a, components);
 }
 void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q) {
-  LISTABLE(TexCoordValues, s, t, r, q);
+  LISTABLE_VERTEX(TexCoordValues, s, t, r, q);
   if (Context* c = C()) c->TexCoord(s, t, r, q);
 }
 
@@ -106,7 +106,7 @@ FFC_TEXCOORD(GLdouble, d)
 #undef FFC_TEXCOORD
 
 void APIENTRY EdgeFlag(GLboolean flag) {
-  LISTABLE(EdgeFlag, flag);
+  LISTABLE_VERTEX(EdgeFlag, flag);
   if (Context* c = C()) c->EdgeFlag(flag);
 }
 void APIENTRY EdgeFlagv(const GLboolean* flag) { EdgeFlag(*flag); }
@@ -114,7 +114,7 @@ void APIENTRY EdgeFlagv(const GLboolean* flag) { EdgeFlag(*flag); }
 // glRect: a quad (x1, y1), (x2, y1), (x2, y2), (x1, y2) at z = 0, as Mesa draws it (GL 2.1 section
 // 2.10); an error inside glBegin/glEnd. Recorded whole, it checks when the list runs.
 void APIENTRY RectValues(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2) {
-  LISTABLE(RectValues, x1, y1, x2, y2);
+  LISTABLE_VERTEX(RectValues, x1, y1, x2, y2);
   if (Context* c = C()) c->Rect(x1, y1, x2, y2);
 }
 #define FFC_RECT(T, s)                                                                                     \

@@ -59,25 +59,6 @@ void lit_fan() {
 // where the material appears and plays it back as four triangles, not two, and leaves the
 // material state at the value set outside the primitive (docs/deviations.md). Soft replays the
 // calls as made. Pinned here so that a Mesa that changes shows.
-// In GL_COMPILE_AND_EXECUTE, Mesa executes a glMaterial between two primitives of the list before
-// it draws the first (its vertices wait in the list's vertex store): the first fan comes out in the
-// second material (docs/deviations.md). Soft executes each call as it comes.
-TEST(DisplayListsKnown, MaterialBetweenPrimitivesCompileAndExecute) {
-  GLfloat first_colour[2][4];
-  for (Side s : {kMesa, kSoft}) {
-    fresh_context(s);
-    glEnable(GL_LIGHTING), glEnable(GL_LIGHT0);
-    static GLfloat buf[256];
-    glFeedbackBuffer(256, GL_3D_COLOR, buf);
-    glRenderMode(GL_FEEDBACK);
-    compile(1, GL_COMPILE_AND_EXECUTE, lit_fan);
-    glRenderMode(GL_RENDER);
-    std::copy(buf + 5, buf + 9, first_colour[s]);  // token, count, x, y, z, then the colour
-  }
-  EXPECT_NEAR(first_colour[kSoft][0], 0.84f, 1e-6) << "the first material, 0.8 diffuse + 0.2 ambient x 0.2";
-  EXPECT_NEAR(first_colour[kMesa][0], 0.14f, 1e-6) << "Mesa now draws the first fan in its own material";
-}
-
 TEST(DisplayListsKnown, MaterialInsideBeginEndInList) {
   auto fan = [] {
     glEnable(GL_LIGHTING), glEnable(GL_LIGHT0);
@@ -207,6 +188,23 @@ std::vector<Case> cases() {
     {"CallListsNegative", nullptr, [] { const GLuint n[1] = {1}; glCallLists(-1, GL_UNSIGNED_INT, n); }, IV},
     {"CallListsNegativeBadType", nullptr, [] { const GLuint n[1] = {1}; glCallLists(-1, GL_DOUBLE, n); }, IE},
     {"CallListUnknownName", nullptr, [] { glCallList(12345); }, OK},
+    {"CallListZero", nullptr, [] { glCallList(0); }, IV},
+    {"CallListZeroInList", nullptr, [] {
+       compile(1, GL_COMPILE, [] { glCallList(0); glTranslatef(1, 0, 0); });
+       observe_error("compile");
+       glCallList(1);
+     }, OK},
+    // (glCallList(0) inside the list's glBegin crashes Mesa 22.3 at glEndList: not a row.)
+    {"StateCallInsideListBegin", nullptr, [] {
+       glNewList(1, GL_COMPILE_AND_EXECUTE);
+       glBegin(GL_TRIANGLES);
+       glEnable(GL_LIGHTING);
+       observe_error("enable");
+       observe("enabled", glIsEnabled(GL_LIGHTING));
+       glEnd();
+       glEndList();
+       glCallList(1);
+     }, IO},
     // GL_COMPILE records without executing; GL_COMPILE_AND_EXECUTE does both.
     {"CompileDoesNotExecute", nullptr, [] {
        compile(1, GL_COMPILE, [] { glColor4f(0.1f, 0.2f, 0.3f, 0.4f); glEnable(GL_LIGHTING); glTranslatef(1, 2, 3); });
@@ -341,8 +339,41 @@ std::vector<Case> cases() {
     {"CallLists4Bytes", nullptr, call_lists<GLubyte>(GL_4_BYTES, {0, 0, 0, 2, 0, 0, 0, 1, 1, 0, 0, 0}), OK},
     // Pictures and feedback of lists.
     {"LitFanFromList", lit_scene, [] { compile(1, GL_COMPILE, lit_fan); glCallList(1); observe_picture("px"); }, OK},
-    // GL_COMPILE_AND_EXECUTE with one material (a change between primitives: see
-    // MaterialBetweenPrimitivesCompileAndExecute).
+    // GL_COMPILE_AND_EXECUTE holds the vertex stream back until the next state call: a glMaterial
+    // between two primitives executes before the first is drawn (docs/deviations.md row 50), and
+    // a query inside glBegin/glEnd finds no glBegin executed yet.
+    {"MaterialBetweenPrimitivesCompileAndExecute", lit_scene, feedback_into(200, GL_3D_COLOR, [] {
+       compile(1, GL_COMPILE_AND_EXECUTE, lit_fan);
+     }), OK},
+    {"MaterialBetweenPrimitivesCompileAndExecutePicture", lit_scene, [] {
+       compile(1, GL_COMPILE_AND_EXECUTE, lit_fan);
+       observe_picture("px");
+     }, OK},
+    {"QueryInsideBeginCompileAndExecute", nullptr, [] {
+       glNewList(1, GL_COMPILE_AND_EXECUTE);
+       glBegin(GL_TRIANGLES);
+       glColor3f(1, 0, 0);
+       GLfloat c[4];
+       glGetFloatv(GL_CURRENT_COLOR, c);
+       observe("red", c[0]);
+       observe_error("inside");
+       glVertex2f(0, 0), glVertex2f(1, 0), glVertex2f(0, 1);
+       glEnd();
+       glGetFloatv(GL_CURRENT_COLOR, c);
+       observe("red after", c[0]);
+       glEnable(GL_DEPTH_TEST);
+       glGetFloatv(GL_CURRENT_COLOR, c);
+       observe("red after a state call", c[0]);
+       glEndList();
+     }, OK},
+    {"DrawArraysCompileAndExecute", [] { static GLfloat pos[12]; arrays_on(pos); }, feedback_into(120, GL_3D_COLOR, [] {
+       glNewList(1, GL_COMPILE_AND_EXECUTE);
+       glDrawArrays(GL_TRIANGLES, 0, 3);
+       glArrayElement(3);
+       glTranslatef(0.5f, 0, 0);
+       glDrawArrays(GL_POINTS, 1, 2);
+       glEndList();
+     }), OK},
     {"LitFanCompileAndExecute", lit_scene, [] {
        compile(1, GL_COMPILE_AND_EXECUTE, [] {
          first_fan();

@@ -95,6 +95,17 @@ std::vector<Case> cases() {
     {"LoadNameEmptyStack", in_select, [] { glLoadName(3); }, IO},
     {"PopNameUnderflow", in_select, [] { glPopName(); }, GL_STACK_UNDERFLOW},
     {"PushNameOverflow", [] { in_select(); for (GLuint k = 0; k < 64; ++k) glPushName(k); }, [] { glPushName(64); }, GL_STACK_OVERFLOW},
+    {"LoadNameEmptyStackAfterHit", nullptr, select_into(16, [] {
+       glBegin(GL_POINTS), glVertex3d(0, 0, 0), glEnd();
+       glLoadName(0);
+       observe("load", glGetError());
+       triangle(0, 0, 0.5f);
+       glPushName(3);
+       glPopName();
+       glPopName();
+       observe("pop", glGetError());
+       triangle(0, 0, 0.25f);
+     }), OK},
     {"NameStackErrorsThenHits", nullptr, select_into(200, [] {
        glLoadName(3);
        observe("load", glGetError());
