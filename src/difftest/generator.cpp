@@ -98,6 +98,7 @@ class Gen {
   const GenOptions& o_;
   Stream s_;
   int counted_ = 0;
+  int calls_in_list_ = 0;  // glCallList(s) recorded into the list being compiled
   bool in_begin_ = false, in_feedback_ = false, arrays_set_ = false;
   bool compiling_ = false, in_select_ = false;  // inside glNewList; in GL_SELECT
   int list_name_ = 0;
@@ -506,15 +507,18 @@ class Gen {
       case 0: case 1: {
         const int name = 1 + pick(6);
         emit("glNewList", {num(name), num(chance(0.7) ? GL_COMPILE : GL_COMPILE_AND_EXECUTE)});
-        if (!compiling_) list_name_ = name;  // a second glNewList is an error and changes nothing
+        if (!compiling_) list_name_ = name, calls_in_list_ = 0;  // a second glNewList is an error and changes nothing
         compiling_ = true;
         break;
       }
-      case 2: case 3: emit("glCallList", {num(1 + pick(7))}); break;
-      case 4: {
+      case 2: case 3: case 4: {
+        // A list calls at most one list: lists calling each other twice or more would run 2^64
+        // times through the nesting limit (Mesa and soft alike never return).
+        if (compiling_ && calls_in_list_++ > 0) return emit("glListBase", {num(pick(3))});
+        if (pick(3) < 2) return emit("glCallList", {num(1 + pick(7))});
         const GLenum type = GLenum(GL_BYTE + pick(10));
         const int bytes = type == GL_2_BYTES ? 2 : type == GL_3_BYTES ? 3 : type == GL_4_BYTES ? 4 : 1;
-        const int n = 1 + pick(4);
+        const int n = compiling_ ? 1 : 1 + pick(4);
         std::vector<double> names;
         for (int k = 0; k < n * bytes; ++k) names.push_back(bytes > 1 && k % bytes != bytes - 1 ? 0 : pick(8) - 1);
         emit("glCallLists", {num(n), num(type), Arg::values(bytes > 1 ? GLenum(GL_UNSIGNED_BYTE) : type, names)});
