@@ -34,9 +34,12 @@ bool drawn(const Stream& s, const Mismatch& m) {
 // glFeedbackBuffer replaces it (-1: the end; one Mesa refused replaces nothing), other kinds show
 // at their call.
 int reach(const Stream& s, const Mismatch& m, const SideResult& mesa) {
-  if (m.kind != "feedback" || m.call < 0) return m.call;
+  // A feedback or selection buffer is named by the call that set it, and written until the next.
+  const bool selection = m.kind == "output" && m.call >= 0 && is(s[size_t(m.call)], "glSelectBuffer");
+  if ((m.kind != "feedback" && !selection) || m.call < 0) return m.call;
+  const char* setter = selection ? "glSelectBuffer" : "glFeedbackBuffer";
   for (size_t i = size_t(m.call) + 1; i < s.size(); ++i)
-    if (is(s[i], "glFeedbackBuffer") && !(i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR)) return int(i) - 1;
+    if (is(s[i], setter) && !(i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR)) return int(i) - 1;
   return -1;
 }
 

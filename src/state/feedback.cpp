@@ -38,15 +38,16 @@ void Context::feedback_primitive(GLenum kind, const raster::WindowVertex* w, siz
     // Mesa's cull stage runs after its clipper, on each triangle it passes on, and culls one of
     // zero area in window space (its float determinant 0) whichever faces are culled.
     if (kind == GL_POLYGON_TOKEN && rs.cull && zero_area(vs.begin())) return;
-    feedback_put(kind);
-    if (kind == GL_POLYGON_TOKEN) feedback_put(double(vs.size()));
     float z[3] = {};
     if (kind == GL_POLYGON_TOKEN && offset_stage) feedback_offset(vs.begin(), rs, z);
-    if (render_mode_ == GL_SELECT) {  // a hit: its window depths, as feedback would report them
+    // A hit: its window depths, as feedback would report them; nothing goes to the feedback buffer.
+    if (render_mode_ == GL_SELECT) {
       int k = 0;
       for (const raster::WindowVertex* v : vs) select_hit(kind == GL_POLYGON_TOKEN && offset_stage ? z[k++] : v->pos.z);
       return;
     }
+    feedback_put(kind);
+    if (kind == GL_POLYGON_TOKEN) feedback_put(double(vs.size()));
     int n = 0;
     for (const raster::WindowVertex* v : vs) {
       feedback_put(v->pos.x), feedback_put(v->pos.y);
