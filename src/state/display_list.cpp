@@ -190,7 +190,7 @@ int Context::list_values(GLenum pname, GLdouble* out) {
   switch (pname) {
     case GL_LIST_INDEX: out[0] = lists_.index; return 1;
     case GL_LIST_MODE: out[0] = lists_.mode; return 1;
-    case GL_LIST_BASE: out[0] = lists_.base; return 1;
+    case GL_LIST_BASE: out[0] = GLint(lists_.base); return 1;  // Mesa reports it as a signed integer (glListBase(-100): -100)
     case GL_MAX_LIST_NESTING: out[0] = ListState::kMaxNesting; return 1;
   }
   return 0;
