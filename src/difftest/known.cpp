@@ -19,16 +19,7 @@ bool any_call(const Stream& s, int upto, Pred pred) {
 
 bool is(const Call& c, const char* name) { return name_of(c) == name; }
 
-// Soft named deviation d while running the stream.
-bool named(const SideResult& soft, const char* d) {
-  return std::find(soft.deviations.begin(), soft.deviations.end(), d) != soft.deviations.end();
-}
 
-// What drawing shows: pictures, feedback, and the count glRenderMode returns.
-bool drawn(const Stream& s, const Mismatch& m) {
-  return m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
-         (m.kind == "return" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glRenderMode");
-}
 
 // The last call that can have caused m: a feedback buffer is written until the next
 // glFeedbackBuffer replaces it (-1: the end; one Mesa refused replaces nothing), other kinds show
@@ -54,9 +45,12 @@ bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& me
 }
 
 // A deviation soft reported while drawing, which can only change what was drawn.
+// A deviation soft names when it draws: it explains what drawing shows (pictures, feedback and
+// the count glRenderMode returns) in a stream where soft named it.
 KnownDeviation drawn(std::string name, const char* soft_says) {
-  return {std::move(name), soft_says, [soft_says](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
-            const bool drawing = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels";
+  return {std::move(name), soft_says, [soft_says](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+            const bool drawing = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
+                                 (m.kind == "return" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glRenderMode");
             return drawing && std::find(soft.deviations.begin(), soft.deviations.end(), soft_says) != soft.deviations.end();
           }};
 }
@@ -168,21 +162,9 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kDrawPixelsFormat) !=
                             soft.deviations.end();
        }},
-      // Row 46: what was drawn or fed back, and the count glRenderMode returns.
-      {"nonfinite-vertex", state::kNonfiniteVertex,
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         return drawn(s, m) && named(soft, state::kNonfiniteVertex);
-       }},
-      // Row 62: what was drawn or fed back, and the count glRenderMode returns.
-      {"unfilled-clipped", state::kUnfilledClipped,
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         return drawn(s, m) && named(soft, state::kUnfilledClipped);
-       }},
-      // Row 56: what was drawn or fed back.
-      {"zero-clip-vertex", state::kZeroClipVertex,
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         return drawn(s, m) && named(soft, state::kZeroClipVertex);
-       }},
+      drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
+      drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
+      drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56
   };
   return v;
 }

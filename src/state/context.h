@@ -329,7 +329,7 @@ class Context {
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void set_color_varies(bool v);
-  void colour_joins_format();  // immediate.cpp: Mesa's vbo re-lays vertices when a glColor3 joins its format
+  void vbo_wrap(bool alpha_one);  // immediate.cpp: an attribute joins Mesa's vbo format mid-primitive
   bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
   void flush_primitive();  // primitive.cpp, through its Assembly
   friend class Assembly;
@@ -392,6 +392,7 @@ class Context {
   glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
+  bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
   bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
   bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
@@ -404,7 +405,7 @@ class Context {
   CurrentValues current_values() const { return {normal_, color_, texcoord_}; }
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
     normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
-    color_size_ = color_active_ = 0;
+    color_size_ = color_active_ = 0, normal_in_format_ = false;
   }
   struct PendingMaterial {
     glm::dvec4* dst;

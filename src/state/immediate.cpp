@@ -8,7 +8,13 @@
 
 namespace ffc::state {
 
-void Context::Normal(double x, double y, double z) { normal_ = {x, y, z}; }
+void Context::Normal(double x, double y, double z) {
+  if (!spec_) {  // the normal joins Mesa's vbo format (vbo_wrap)
+    if (in_begin_ && !normal_in_format_) vbo_wrap(false);
+    normal_in_format_ = true;
+  }
+  normal_ = {x, y, z};
+}
 
 void Context::Color(double r, double g, double b, double a, int components) {
   // glColor3 sets alpha to 1 (GL 2.1 section 2.7). Mesa's vbo keeps the colour attribute's size and
@@ -19,7 +25,7 @@ void Context::Color(double r, double g, double b, double a, int components) {
   if (!spec_) {
     if (in_begin_ && prim_mode_ == GL_LINE_LOOP && components > color_size_ && !verts_.empty())
       deviations_.insert(kLineLoopWrap);  // docs/deviations.md row 48
-    if (in_begin_ && color_size_ == 0 && components == 3 && flushed_color_.a != 1) colour_joins_format();
+    if (in_begin_ && color_size_ == 0) vbo_wrap(components == 3 && flushed_color_.a != 1);
     if (components > color_size_) color_size_ = color_active_ = components;
     else if (components < color_active_) {
       color_active_ = components;
@@ -33,16 +39,18 @@ void Context::Color(double r, double g, double b, double a, int components) {
   flushed_color_ = color_;  // GL 2.1: tracked at once
   update_color_material();
 }
-// A glColor3 inside glBegin/glEnd whose colour is not yet in Mesa's vbo vertex format: the vbo
-// draws the primitives it holds whole (vbo_exec_wrap_upgrade_vertex), keeps the vertices the rest of
-// the primitive needs, and lays those out again with the colour as the state holds it at three
-// components, so their alpha becomes 1 (the vertices drawn already keep the state's alpha).
-// Measured per mode in feedback: lines, triangles and quads keep the unfinished primitive's
-// vertices; a line strip its last; a fan and a polygon the first and the last; a triangle or quad
-// strip its last 2, or 3 after an odd count (an even number of triangles drawn keeps the strip's
-// winding), or every vertex before its first whole primitive. A line loop's wrap is named, not
-// modelled (kLineLoopWrap).
-void Context::colour_joins_format() {
+// An attribute joining Mesa's vbo vertex format inside glBegin/glEnd (the first glNormal or glColor
+// since the format's reset): the vbo draws the whole primitives it holds as a draw of their own
+// (vbo_exec_wrap_upgrade_vertex), keeps the vertices the rest of the primitive needs and lays them
+// out again with the attribute as the state holds it. A colour joining at three components so
+// gives the kept vertices alpha 1 (`alpha_one`; the vertices drawn already keep the state's
+// alpha); and the draws being two, each decides alone whether a vertex lies outside the view
+// volume, which chooses how quads are split (Assembly::assemble). Measured per mode in feedback:
+// lines, triangles and quads keep the unfinished primitive's vertices; a line strip its last; a
+// fan and a polygon the first and the last; a triangle or quad strip its last 2, or 3 after an odd
+// count (an even number of triangles drawn keeps the strip's winding), or every vertex before its
+// first whole primitive. A line loop's wrap is named, not modelled (kLineLoopWrap).
+void Context::vbo_wrap(bool alpha_one) {
   const size_t n = immediate_list_ ? list_pos_.size() : verts_.size();
   if (n == 0) return;
   size_t keep = 0;
@@ -57,10 +65,11 @@ void Context::colour_joins_format() {
       keep = n < (prim_mode_ == GL_QUAD_STRIP ? 4u : 3u) ? n : 2 + n % 2;
       shared = keep < n;
       break;
-    default: return;  // points keep nothing; line loops: kLineLoopWrap
+    case GL_LINE_LOOP: deviations_.insert(kLineLoopWrap); return;  // docs/deviations.md row 48
+    default: return;  // points keep nothing
   }
   if (immediate_list_) {  // GL_TRIANGLES: the unfinished triangle's colours, lit at glEnd
-    if (!list_color_.empty())
+    if (alpha_one && !list_color_.empty())
       for (size_t i = n - keep; i < n; ++i) list_color_[i].a = 1;
     return;
   }
@@ -71,21 +80,26 @@ void Context::colour_joins_format() {
   } else {
     kept.assign(verts_.end() - std::ptrdiff_t(keep), verts_.end());
   }
-  if (shared) {
-    // The strip's whole primitives drawn from the vertices before the kept ones, and those.
+  // The whole quads drawn apart matter to their split; other modes draw the same primitives
+  // either way, so only shared vertices need the draw now (their alpha changes after it).
+  const bool quads_apart = prim_mode_ == GL_QUADS && n - keep >= 4;
+  if (shared || quads_apart) {
     if (prim_mode_ == GL_TRIANGLE_STRIP || prim_mode_ == GL_QUAD_STRIP) verts_.resize(n - keep + 2);
+    else if (quads_apart) verts_.resize(n - keep);
     flush_primitive();
   }
-  // The alpha the vertex stage took from the colour: unlit, or lit with colour material on the
-  // diffuse colour of that face.
-  const bool diffuse = color_material_ && (cm_mode_ == GL_DIFFUSE || cm_mode_ == GL_AMBIENT_AND_DIFFUSE);
-  const bool front = !lighting_ || (diffuse && cm_face_ != GL_BACK);
-  const bool back = !lighting_ || (diffuse && cm_face_ != GL_FRONT);
-  for (raster::Vertex& v : kept) {
-    if (front) v.front.a = 1;
-    if (back) v.back.a = 1;
+  if (alpha_one) {
+    // The alpha the vertex stage took from the colour: unlit, or lit with colour material on the
+    // diffuse colour of that face.
+    const bool diffuse = color_material_ && (cm_mode_ == GL_DIFFUSE || cm_mode_ == GL_AMBIENT_AND_DIFFUSE);
+    const bool front = !lighting_ || (diffuse && cm_face_ != GL_BACK);
+    const bool back = !lighting_ || (diffuse && cm_face_ != GL_FRONT);
+    for (raster::Vertex& v : kept) {
+      if (front) v.front.a = 1;
+      if (back) v.back.a = 1;
+    }
   }
-  if (shared) verts_ = std::move(kept);
+  if (shared || quads_apart) verts_ = std::move(kept);
   else std::copy(kept.begin(), kept.end(), verts_.end() - std::ptrdiff_t(keep));
 }
 
@@ -103,8 +117,9 @@ void Context::Vertex(double x, double y, double z, double w) {
 void Context::flush_stored_keeping_format() {
   if (!format_has_position_) return flush_stored();
   const int size = color_size_, active = color_active_;
+  const bool normal = normal_in_format_;
   flush_stored();
-  color_size_ = size, color_active_ = active, format_has_position_ = true;
+  color_size_ = size, color_active_ = active, normal_in_format_ = normal, format_has_position_ = true;
 }
 
 // A glVertex outside glBegin/glEnd draws nothing, but the position joins Mesa's vbo vertex format

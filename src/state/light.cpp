@@ -243,7 +243,7 @@ void Context::flush_stored() {
   if (spec_) return;
   copy_pending();
   pending_materials_.clear();
-  color_size_ = color_active_ = 0;  // the vbo's vertex format is reset
+  color_size_ = color_active_ = 0, normal_in_format_ = false;  // the vbo's vertex format is reset
   format_has_position_ = false;
 }
 void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
