@@ -35,6 +35,7 @@ const std::vector<Category>& categories() {
       {"huge", "viewports of tens of thousands of pixels and draws of millions of vertices"},
       {"lists", "display lists: glNewList (both modes) around the other calls, glEndList, glCallList, glCallLists of every type, glListBase, glGenLists, glDeleteLists, glIsList"},
       {"selection", "glSelectBuffer, glRenderMode(GL_SELECT), the name stack (past its ends too), glPassThrough"},
+      {"polygonmode", "glPolygonMode: faces drawn as lines or points"},
   };
   return v;
 }
@@ -210,6 +211,7 @@ class Gen {
         {"get", &Gen::get_call, 2},         {"clear", &Gen::clear_call, 1},       {"fog", &Gen::fog_call, 1},
         {"rasterpos", &Gen::rasterpos_call, 1}, {"huge", &Gen::huge_call, 1},
         {"lists", &Gen::list_call, 2},      {"selection", &Gen::selection_call, 2},
+        {"polygonmode", &Gen::polygon_mode_call, 1},
     };
     int total = 0;
     for (const auto& a : actions)
@@ -595,6 +597,11 @@ class Gen {
     emit(chance(0.7) ? "glEnable" : "glDisable",
          {num(one_of({GL_FOG, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_BLEND, GL_SCISSOR_TEST, GL_ALPHA_TEST,
                       GL_LINE_SMOOTH, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_LINE_STIPPLE, GL_DITHER}))});
+  }
+
+  void polygon_mode_call() {
+    emit("glPolygonMode", {num(one_of({GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, GL_FRONT_AND_BACK})),
+                           num(one_of({GL_POINT, GL_LINE, GL_LINE, GL_FILL}))});
   }
 
   void rasterpos_call() {
