@@ -34,12 +34,25 @@ inline bool valid_face(GLenum f) { return f == GL_FRONT || f == GL_BACK || f == 
 // Clamped to [0, 1], a NaN to 0 as Mesa stores it (GL 2.1 leaves a NaN's clamp undefined).
 inline double clamp01(double x) { return x > 0 ? (x < 1 ? x : 1) : 0; }
 
-// Whether a triangle's window-space area is 0 as Mesa's draw module computes it (float, edges
-// from the third vertex): its cull and two-side stages both ask.
-inline bool zero_area(const raster::WindowVertex* const* v) {
+// A triangle's orientation as Mesa's draw module computes it for its cull, two-side and unfilled
+// stages (draw_pipe_cull.c): the float determinant of its window-space edges from the third
+// vertex, positive for counter-clockwise. Triangles near zero area can get the other sign than
+// their exact (homogeneous) area has, and then the other face's polygon mode.
+inline float window_det(const raster::WindowVertex* const* v) {
   const float ex = float(v[0]->pos.x) - float(v[2]->pos.x), ey = float(v[0]->pos.y) - float(v[2]->pos.y);
   const float fx = float(v[1]->pos.x) - float(v[2]->pos.x), fy = float(v[1]->pos.y) - float(v[2]->pos.y);
-  return ex * fy - ey * fx == 0;
+  return ex * fy - ey * fx;
+}
+inline bool zero_area(const raster::WindowVertex* const* v) { return window_det(v) == 0; }
+
+// Facing by that determinant. One of zero area is clockwise to the unfilled stage (the back face
+// under glFrontFace(GL_CCW), the front under GL_CW: measured), front-facing to the two-side stage
+// (its colours), and a back face to the cull stage whatever glFrontFace says (culled when
+// glCullFace names GL_BACK, passed with GL_FRONT: measured in feedback).
+inline bool window_back_facing(float det, const raster::State& rs) { return (rs.front_face == GL_CCW) != (det > 0); }
+inline bool window_culled(float det, const raster::State& rs) {
+  if (det != 0) return raster::culled(window_back_facing(det, rs), rs);
+  return rs.cull && (rs.cull_mode == GL_BACK || rs.cull_mode == GL_FRONT_AND_BACK);
 }
 
 }  // namespace ffc::state

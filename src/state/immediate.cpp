@@ -25,7 +25,9 @@ void Context::Color(double r, double g, double b, double a, int components) {
   if (!spec_) {
     if (in_begin_ && prim_mode_ == GL_LINE_LOOP && components > color_size_ && !verts_.empty())
       deviations_.insert(kLineLoopWrap);  // docs/deviations.md row 48
-    if (in_begin_ && color_size_ == 0) vbo_wrap(components == 3 && flushed_color_.a != 1);
+    // Joining the format, or growing from 3 to 4 components, wraps (vbo_exec_fixup_vertex); the
+    // vertices kept by a growth had 3 components, alpha 1, as they have here already.
+    if (in_begin_ && components > color_size_) vbo_wrap(color_size_ == 0 && components == 3 && flushed_color_.a != 1);
     if (components > color_size_) color_size_ = color_active_ = components;
     else if (components < color_active_) {
       color_active_ = components;
@@ -40,7 +42,7 @@ void Context::Color(double r, double g, double b, double a, int components) {
   update_color_material();
 }
 // An attribute joining Mesa's vbo vertex format inside glBegin/glEnd (the first glNormal or glColor
-// since the format's reset): the vbo draws the whole primitives it holds as a draw of their own
+// since the format's reset), or a colour growing from 3 components to 4: the vbo draws the whole primitives it holds as a draw of their own
 // (vbo_exec_wrap_upgrade_vertex), keeps the vertices the rest of the primitive needs and lays them
 // out again with the attribute as the state holds it. A colour joining at three components so
 // gives the kept vertices alpha 1 (`alpha_one`; the vertices drawn already keep the state's

@@ -127,13 +127,14 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
   if (c_.unfilled() && unfilled_triangle(v, provoking)) return;
   if ((c_.outside_[v[0]] | c_.outside_[v[1]] | c_.outside_[v[2]]) == 0) {
     const bool back = raster::back_facing_triangle(verts[v[0]].clip, verts[v[1]].clip, verts[v[2]].clip, rs_);
-    if (raster::culled(back, rs_)) return;
-    const bool use_back = back && rs_.two_side;
     if (feedback_) {  // each vertex's own colour
       raster::WindowVertex* in = scratch.inside;
-      // Mesa's two-side stage takes a triangle of zero area (determinant 0) as front-facing.
+      // Mesa's pipeline: facing from the window-space determinant (gl_rules.h); its two-side stage
+      // takes a triangle of zero area as front-facing.
       const raster::WindowVertex* wv[3] = {&window[v[0]], &window[v[1]], &window[v[2]]};
-      const bool reported_back = use_back && !zero_area(wv);
+      const float det = window_det(wv);
+      if (window_culled(det, rs_)) return;
+      const bool reported_back = rs_.two_side && det != 0 && window_back_facing(det, rs_);
       for (int k = 0; k < 3; ++k) {
         in[k] = window[v[k]];
         in[k].color = reported_back ? verts[v[k]].back : verts[v[k]].front;
@@ -141,6 +142,8 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
       }
       return c_.feedback_primitive(GL_POLYGON_TOKEN, in, 3, false, rs_, offset_stage_);
     }
+    if (raster::culled(back, rs_)) return;
+    const bool use_back = back && rs_.two_side;
     std::array<raster::SetupVertex, 3> sv;
     for (int k = 0; k < 3; ++k) {
       const raster::Vertex& src = rs_.flat ? at(provoking) : verts[v[k]];  // flat: the provoking colour
@@ -198,12 +201,22 @@ bool Assembly::clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, c
 // remain (zero-length ones too): named when a triangle is clipped (kUnfilledClipped).
 bool Assembly::unfilled_triangle(const size_t v[3], size_t provoking) {
   const std::vector<raster::Vertex>& verts = c_.verts_;
-  const bool back = raster::back_facing_triangle(verts[v[0]].clip, verts[v[1]].clip, verts[v[2]].clip, rs_);
-  if (raster::culled(back, rs_)) return true;
+  const bool clipped = c_.outside_[v[0]] | c_.outside_[v[1]] | c_.outside_[v[2]];
+  bool back, front_colours;
+  if (!clipped) {  // facing as Mesa's pipeline finds it (gl_rules.h), zero area included
+    const raster::WindowVertex* wv[3] = {&c_.window_[v[0]], &c_.window_[v[1]], &c_.window_[v[2]]};
+    const float det = window_det(wv);
+    if (window_culled(det, rs_)) return true;
+    back = window_back_facing(det, rs_), front_colours = det == 0;
+  } else {
+    back = raster::back_facing_triangle(verts[v[0]].clip, verts[v[1]].clip, verts[v[2]].clip, rs_);
+    if (raster::culled(back, rs_)) return true;
+    front_colours = false;
+  }
   const GLenum mode = c_.polygon_mode_[back ? 1 : 0];
   if (mode == GL_FILL) return false;
-  if (c_.outside_[v[0]] | c_.outside_[v[1]] | c_.outside_[v[2]]) c_.deviations_.insert(kUnfilledClipped);
-  const bool use_back = back && rs_.two_side;
+  if (clipped) c_.deviations_.insert(kUnfilledClipped);
+  const bool use_back = back && rs_.two_side && !front_colours;
   raster::Vertex corner[3];
   for (int k = 0; k < 3; ++k) {
     corner[k] = verts[v[k]];
