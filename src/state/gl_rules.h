@@ -36,12 +36,14 @@ inline double clamp01(double x) { return x > 0 ? (x < 1 ? x : 1) : 0; }
 
 // A triangle's orientation as Mesa's draw module computes it for its cull, two-side and unfilled
 // stages (draw_pipe_cull.c): the float determinant of its window-space edges from the third
-// vertex, positive for counter-clockwise. Triangles near zero area can get the other sign than
-// their exact (homogeneous) area has, and then the other face's polygon mode.
+// vertex, taken with rows counted down as the module holds them (llvmpipe's y_down, also in
+// feedback, which turns them up only when it reports them), here signed positive for
+// counter-clockwise. Triangles near zero area can get the other sign than their exact
+// (homogeneous) area has, and then the other face's polygon mode (measured).
 inline float window_det(const raster::WindowVertex* const* v) {
-  const float ex = float(v[0]->pos.x) - float(v[2]->pos.x), ey = float(v[0]->pos.y) - float(v[2]->pos.y);
-  const float fx = float(v[1]->pos.x) - float(v[2]->pos.x), fy = float(v[1]->pos.y) - float(v[2]->pos.y);
-  return ex * fy - ey * fx;
+  const float ex = v[0]->fx - v[2]->fx, ey = v[0]->y_down - v[2]->y_down;
+  const float fx = v[1]->fx - v[2]->fx, fy = v[1]->y_down - v[2]->y_down;
+  return -(ex * fy - ey * fx);
 }
 inline bool zero_area(const raster::WindowVertex* const* v) { return window_det(v) == 0; }
 
