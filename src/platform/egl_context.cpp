@@ -39,6 +39,10 @@ bool has_extension(const char* list, const char* name) {
 struct Display {
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLConfig config = nullptr;
+  // Contexts are made without a config where the display allows (EGL_KHR_no_config_context): Mesa
+  // then takes the default draw and read buffers from the surface first bound, GL_FRONT for a
+  // single-buffered pbuffer, as OSMesa's; a context made with a config says GL_BACK.
+  EGLConfig context_config = nullptr;
   std::string platform, why;
 };
 
@@ -103,7 +107,10 @@ Display open_display() {
   if (!egl().ChooseConfig(d.display, config_attribs, &d.config, 1, &configs) || configs < 1) {
     d.why = egl_error("eglChooseConfig (RGBA8, depth 24, pbuffer, OpenGL)");
     d.display = EGL_NO_DISPLAY;
+    return d;
   }
+  const bool no_config = has_extension(egl().QueryString(d.display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
+  d.context_config = no_config ? EGL_NO_CONFIG_KHR : d.config;
   return d;
 }
 
@@ -173,12 +180,16 @@ EGLContext reader_context(const Display& d) {
   if (reader == EGL_NO_CONTEXT) {
     egl().BindAPI(EGL_OPENGL_API);
     const EGLint none[] = {EGL_NONE};  // GL's defaults: any version, compatibility
-    reader = egl().CreateContext(d.display, d.config, EGL_NO_CONTEXT, none);
+    reader = egl().CreateContext(d.display, d.context_config, EGL_NO_CONTEXT, none);
     if (reader == EGL_NO_CONTEXT) throw std::runtime_error(egl_error("eglCreateContext (the reader)"));
   }
   return reader;
 }
 
+// A new pbuffer, its colour and depth zero. GL leaves a new buffer's contents undefined; llvmpipe's
+// buffers under OSMesa start at 0, colour and depth alike, and so do ours (src/raster/raster.h), so
+// a program that draws before it clears draws the same everywhere. Cleared by the reader context
+// (reader_mutex held by the caller), whose state is its own, so no drawing context's changes.
 EGLSurface make_pbuffer(const Display& d, int width, int height) {
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     throw std::runtime_error("egl: framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -186,6 +197,17 @@ EGLSurface make_pbuffer(const Display& d, int width, int height) {
   const EGLint surface_attribs[] = {EGL_WIDTH, width, EGL_HEIGHT, height, EGL_NONE};
   EGLSurface s = egl().CreatePbufferSurface(d.display, d.config, surface_attribs);
   if (s == EGL_NO_SURFACE) throw std::runtime_error(egl_error("eglCreatePbufferSurface"));
+  const Current before = save_current();
+  if (!egl().MakeCurrent(d.display, s, s, reader_context(d))) {
+    const std::string why = egl_error("eglMakeCurrent (the reader, clearing a new pbuffer)");
+    restore_current(before, d.display);
+    egl().DestroySurface(d.display, s);
+    throw std::runtime_error(why);
+  }
+  gl<void (*)(GLclampd)>("glClearDepth")(0.0);  // the reader's own state: it only ever clears to 0
+  gl<void (*)(GLbitfield)>("glClear")(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  finish_current();
+  restore_current(before, d.display);
   return s;
 }
 
@@ -208,8 +230,12 @@ EglContext::EglContext(const EglRequest& r) : width_(r.width), height_(r.height)
                                                     : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT;
   const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, r.major, EGL_CONTEXT_MINOR_VERSION, r.minor,
                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, profile, EGL_NONE};
-  EGLSurface surface = make_pbuffer(d, r.width, r.height);
-  EGLContext context = egl().CreateContext(d.display, d.config, EGL_NO_CONTEXT, context_attribs);
+  EGLSurface surface;
+  {
+    std::lock_guard<std::mutex> lock(reader_mutex);
+    surface = make_pbuffer(d, r.width, r.height);
+  }
+  EGLContext context = egl().CreateContext(d.display, d.context_config, EGL_NO_CONTEXT, context_attribs);
   if (context == EGL_NO_CONTEXT) {
     const std::string why = egl_error(r.profile == Profile::Core ? "eglCreateContext (core profile)"
                                                                  : "eglCreateContext (compatibility profile)");
@@ -259,7 +285,11 @@ bool EglContext::is_current() const {
 
 void EglContext::resize(int width, int height) {
   const Display& d = display();
-  EGLSurface fresh = make_pbuffer(d, width, height);  // throws for a bad size, nothing changed
+  EGLSurface fresh;
+  {
+    std::lock_guard<std::mutex> lock(reader_mutex);
+    fresh = make_pbuffer(d, width, height);  // throws for a bad size, nothing changed
+  }
   const bool current = is_current();
   const Current before = save_current();
   if (bind(display_, surface_, context_)) finish_current();
