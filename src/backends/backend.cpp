@@ -39,8 +39,8 @@ std::unique_ptr<Backend> make(const std::string& name) {
   if (name == "soft-double-spec") return std::make_unique<SoftBackend>(state::Precision::Double, true);
   if (name == "mesa")
     throw std::invalid_argument(
-        "backend 'mesa' is not built: OSMesa was not found at configure time (or FFCOMPAT_WITH_OSMESA "
-        "was OFF, or the program does not link ffcompat_mesa)");
+        "backend 'mesa' is not built: neither OSMesa nor EGL was found at configure time (or both "
+        "FFCOMPAT_WITH_OSMESA and FFCOMPAT_WITH_EGL were OFF, or the program does not link ffcompat_mesa)");
   throw std::invalid_argument("unknown backend '" + name + "' (mesa, soft, soft-double, soft-spec or soft-double-spec)");
 }
 

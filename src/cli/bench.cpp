@@ -97,6 +97,7 @@ void add_bench(CLI::App& app) {
                         // soft's rasterizer: the AVX-512 kernels or the portable scalar loops (same pictures)
                         {"soft_kernels", raster::detail::wide_kernels() ? "avx512" : "scalar"}};
     if (median.count("mesa") && median.count("soft")) j["speedup"] = median["mesa"] / median["soft"];
+    if (median.count("mesa")) add_platform(j, "mesa");
     if (*json) return print_json(j);
     std::printf("%-12s %12s %18s\n", "backend", "median ms", "allocations/frame");
     for (const auto& n : names) std::printf("%-12s %12.3f %18.1f\n", n.c_str(), median[n], alloc_json[n].get<double>());

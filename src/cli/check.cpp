@@ -43,6 +43,7 @@ void add_check(CLI::App& app) {
       const bool pass = d.max_diff <= *max_steps;
       nlohmann::json j = to_json(d);
       j["level"] = "pixel", j["scene"] = opts->json(desc), j["max_allowed"] = *max_steps, j["pass"] = pass;
+      add_platform(j, "mesa");
       if (!pass) {  // the evidence, for a person to look at
         namespace fs = std::filesystem;
         fs::create_directories(*out);
@@ -81,6 +82,7 @@ void add_check(CLI::App& app) {
                           {"known_mesa_deviations", r.known_mesa_deviations},
                           {"tolerance", *tolerance},
                           {"pass", pass}};
+      add_platform(j, "mesa");
       print_json(j);
     } else {
       std::printf("vertices %zu\n%-8s %12s %12s\n", r.vertices, "channel", "max_abs", "rms");

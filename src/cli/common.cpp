@@ -6,6 +6,10 @@
 #include <stdexcept>
 
 #include "mesh/icosphere.h"
+#include "platform/platform_choice.h"
+#ifdef FFCOMPAT_WITH_MESA
+#include "backends/mesa/mesa_backend.h"
+#endif
 
 namespace ffc::cli {
 
@@ -25,6 +29,54 @@ void add_depth_option(CLI::App* app, int& depth, const std::string& help) {
         return mesh::icosphere_depth_error(d);
       },
       "0.." + std::to_string(mesh::kMaxIcosphereDepth)));
+}
+
+namespace {
+
+// Whether each platform is built (for a build without Mesa: neither).
+bool platform_built(const char* name) {
+#ifdef FFCOMPAT_WITH_MESA
+  for (const std::string& p : backends::mesa_platforms())
+    if (p == name) return true;
+#endif
+  (void)name;
+  return false;
+}
+
+}  // namespace
+
+void add_platform_options(CLI::App& app) {
+  for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; })) {
+    const std::string& n = cmd->get_name();
+    if (!cmd->get_option_no_throw("--backend") && !cmd->get_option_no_throw("--backends") && n != "fuzz" &&
+        n != "stress")
+      continue;
+    cmd->add_option_function<std::string>(
+           "--platform", [](const std::string& v) { setenv(platform::kPlatformVariable, v.c_str(), 1); },
+           "Mesa's platform: osmesa or egl (default: osmesa where built, else egl; or FFCOMPAT_PLATFORM)")
+        ->check(CLI::Validator(
+            [](std::string& v) -> std::string {
+              try {
+                platform::choose_mesa_platform(platform_built("osmesa"), platform_built("egl"), v.c_str());
+              } catch (const std::invalid_argument& e) {
+                return e.what();
+              }
+              return "";
+            },
+            "osmesa|egl"));
+  }
+}
+
+nlohmann::json mesa_platform_json() {
+#ifdef FFCOMPAT_WITH_MESA
+  return backends::mesa_platform();
+#else
+  return nullptr;
+#endif
+}
+
+void add_platform(nlohmann::json& j, const std::string& backend) {
+  if (backend == "mesa") j["platform"] = mesa_platform_json();
 }
 
 void refuse_option(CLI::App* app, const std::string& name, const std::string& why) {
@@ -53,7 +105,7 @@ void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals, bool with_
   cam_height_option = app->add_option("--cam-height", cam_height, "Cube camera height (built-in cube only)")->capture_default_str();
   if (with_backend)
     app->add_option("--backend", backend,
-                    "Renderer: mesa (Mesa's fixed-function pipeline, OSMesa), soft (ours, float) or soft-double (ours, double)")
+                    "Renderer: mesa (Mesa's fixed-function pipeline, OSMesa or EGL: --platform), soft (ours, float) or soft-double (ours, double)")
         ->check(CLI::IsMember(kBackendNames))
         ->capture_default_str();
 }

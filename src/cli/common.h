@@ -55,6 +55,16 @@ void add_depth_option(CLI::App* app, int& depth, const std::string& help);
 // Hidden from --help.
 void refuse_option(CLI::App* app, const std::string& name, const std::string& why);
 
+// --platform osmesa|egl, the Mesa backend's platform (src/platform/platform_choice.h), on every
+// command that takes --backend or --backends and on those that always draw on Mesa (fuzz,
+// stress). It sets FFCOMPAT_PLATFORM, so a program `ffcompat run` starts takes it too. A platform
+// this build lacks is refused as the option is parsed.
+void add_platform_options(CLI::App& app);
+// The platform a "mesa" backend takes now ("osmesa" or "egl"); null in a build without Mesa.
+nlohmann::json mesa_platform_json();
+// Adds "platform" to a command's JSON when `backend` is Mesa.
+void add_platform(nlohmann::json& j, const std::string& backend);
+
 // The backends by name, for --backend's choices and help.
 extern const std::vector<std::string> kBackendNames;
 

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_fuzz(app);
   ffc::cli::add_run(app);
   ffc::cli::add_calls(app);
+  ffc::cli::add_platform_options(app);  // after the commands: it adds --platform to those that draw on Mesa
   // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
   std::string commands;
   bool known = false;

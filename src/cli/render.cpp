@@ -20,6 +20,7 @@ void add_render(CLI::App& app) {
     image::write_png(*out, scene::render(desc, *backend));
     nlohmann::json j = opts->json(desc);
     j["backend"] = backend->name();
+    add_platform(j, backend->name());
     j["out"] = *out;
     if (*json)
       print_json(j);

@@ -1,7 +1,7 @@
 #include "difftest/runner.h"
 
-#ifdef FFCOMPAT_WITH_OSMESA
-#include <GL/osmesa.h>
+#ifdef FFCOMPAT_WITH_MESA
+#include "backends/mesa/mesa_backend.h"
 #endif
 #include <poll.h>
 #include <sys/mman.h>
@@ -246,9 +246,10 @@ SideResult execute(const Stream& s, Side side, const RunOptions& o, volatile int
   SideResult r;
   auto backend = backends::make(side_name(side));
   backend->begin(o.width, o.height);
-  auto load = [side](const char* name) -> void* {
-#ifdef FFCOMPAT_WITH_OSMESA
-    return side == Side::Mesa ? reinterpret_cast<void*>(OSMesaGetProcAddress(name)) : state::proc_address(name);
+  auto load = [side, &backend](const char* name) -> void* {
+#ifdef FFCOMPAT_WITH_MESA
+    return side == Side::Mesa ? backends::mesa_proc_address(static_cast<backends::MesaBackend&>(*backend).platform(), name)
+                              : state::proc_address(name);
 #else
     return side == Side::Mesa ? nullptr : state::proc_address(name);  // make("mesa") threw already
 #endif

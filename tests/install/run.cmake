@@ -1,4 +1,4 @@
-# cmake -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DCXX=... -DWITH_OSMESA=ON|OFF -P run.cmake
+# cmake -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DCXX=... -DWITH_MESA=ON|OFF -P run.cmake
 # Installs the build into WORK_DIR/prefix, then builds tests/install/consumer against it twice,
 # with find_package(ffcompat) and with pkg-config, and runs both (consumer.cpp checks a lit pixel).
 cmake_minimum_required(VERSION 3.20)
@@ -16,7 +16,7 @@ file(REMOVE_RECURSE ${WORK_DIR})
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 
 set(backends soft)
-if(WITH_OSMESA)
+if(WITH_MESA)
   list(APPEND backends mesa)
 endif()
 
@@ -35,10 +35,10 @@ run(${CXX} -std=c++17 -O2 ${CONSUMER_DIR}/consumer.cpp ${flags} -o ${WORK_DIR}/p
 run(${WORK_DIR}/pc-consumer ${backends})
 message(STATUS "pkg-config consumer (${flags}):\n${out}")
 
-# Without OSMesa, asking for "mesa" names why it is missing.
-if(NOT WITH_OSMESA)
+# Without Mesa (no OSMesa, no EGL), asking for "mesa" names why it is missing.
+if(NOT WITH_MESA)
   execute_process(COMMAND ${WORK_DIR}/pc-consumer mesa RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(rc EQUAL 0 OR NOT out MATCHES "backend 'mesa' is not built: OSMesa was not found at configure time")
+  if(rc EQUAL 0 OR NOT out MATCHES "backend 'mesa' is not built: neither OSMesa nor EGL was found at configure time")
     message(FATAL_ERROR "a mesa context without OSMesa should fail naming why; got (${rc}):\n${out}")
   endif()
   message(STATUS "without OSMesa:\n${out}")

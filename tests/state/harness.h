@@ -3,7 +3,6 @@
 // read-back of every piece of state the context can report (glGet*, glGetLightfv,
 // glGetMaterialfv, glIsEnabled).
 #pragma once
-#include <GL/osmesa.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +16,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "backends/mesa/mesa_backend.h"
 #include "difftest/probes.h"
 #include "difftest/stream.h"
 #include "gl/dispatch.h"
@@ -71,7 +71,8 @@ inline backends::Backend& backend(Side s) {
 inline void fresh_context(Side s) {
   backend(s).begin(kWidth, kHeight);
   auto load = [s](const char* name) -> void* {
-    return s == kMesa ? reinterpret_cast<void*>(OSMesaGetProcAddress(name)) : state::proc_address(name);
+    return s == kMesa ? backends::mesa_proc_address(static_cast<backends::MesaBackend&>(backend(kMesa)).platform(), name)
+                      : state::proc_address(name);
   };
   Extra& e = ext();
   e.Lightiv = reinterpret_cast<decltype(e.Lightiv)>(load("glLightiv"));

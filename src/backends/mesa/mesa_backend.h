@@ -1,30 +1,45 @@
-// Mesa's own fixed-function pipeline, offscreen. The platform part (context creation and the
-// proc-address loader) is all that touches OSMesa, which Mesa 25.1 removed: an EGL pbuffer
-// version of this one class is the whole port.
+// Mesa's own fixed-function pipeline, offscreen, on one of two platforms (mesa_platform.h): OSMesa
+// or EGL, the same llvmpipe behind both. name() is "mesa" on either; platform() says which.
 #pragma once
-#include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "backends/backend.h"
 
 namespace ffc::backends {
 
+namespace mesa {
+class Platform;
+}
+
+// The platforms of this build ("osmesa", "egl"), in order of preference.
+std::vector<std::string> mesa_platforms();
+// The platform a "mesa" backend takes now: FFCOMPAT_PLATFORM's if set, else OSMesa where built,
+// else EGL (src/platform/platform_choice.h). Throws std::invalid_argument for an unknown or
+// unbuilt platform.
+std::string mesa_platform();
+// A GL entry point of that platform's Mesa, or null; for the functions the dispatch does not
+// hold (the differential tester's glLightiv and others).
+void* mesa_proc_address(const std::string& platform, const char* name);
+
 class MesaBackend final : public Backend {
  public:
-  MesaBackend() = default;
+  // Throws std::invalid_argument for a platform that is unknown or not built.
+  explicit MesaBackend(std::string platform = mesa_platform());
   ~MesaBackend() override;
   MesaBackend(const MesaBackend&) = delete;
   MesaBackend& operator=(const MesaBackend&) = delete;
 
   std::string name() const override { return "mesa"; }
+  const std::string& platform() const { return platform_; }
   void begin(int width, int height) override;
   void resume() override;
   void read_into(image::Image& out) override;
 
  private:
-  void* context_ = nullptr;  // OSMesaContext
-  int width_ = 0, height_ = 0;
-  std::vector<uint8_t> buffer_;  // OSMesa renders here, bottom row first
+  std::string platform_;
+  std::unique_ptr<mesa::Platform> context_;  // a fresh one per begin()
 };
 
 }  // namespace ffc::backends

@@ -5,14 +5,12 @@
 #include <cstring>
 #include <functional>
 
-#if __has_include(<GL/osmesa.h>)
+// Built only where ffcompat is built with OSMesa (FFCOMPAT_WITH_OSMESA): libOSMesa itself is
+// found at run time.
 #include <GL/osmesa.h>
-#define FFC_CLASSIC_OSMESA 1
-#endif
 
 namespace ffc::classic {
 
-#ifdef FFC_CLASSIC_OSMESA
 namespace {
 
 // The few OSMesa functions used, found once in the privately loaded library.
@@ -74,7 +72,7 @@ void finish() {
 
 }  // namespace
 
-std::unique_ptr<OsMesaSurface> OsMesaSurface::make(int width, int height, std::string& why) {
+std::unique_ptr<MesaSurface> OsMesaSurface::make(int width, int height, std::string& why) {
   const OsMesa& m = osmesa();
   if (!m.error.empty()) {
     why = m.error;
@@ -131,19 +129,5 @@ void OsMesaSurface::read_rgba(unsigned char* out) {
   for (int y = 0; y < height_; ++y)  // OSMesa's rows are bottom-up
     std::memcpy(out + size_t(y) * row, &buffer_[size_t(height_ - 1 - y) * row], row);
 }
-
-#else  // built without <GL/osmesa.h>
-
-std::unique_ptr<OsMesaSurface> OsMesaSurface::make(int, int, std::string& why) {
-  why = "this libGL.so.1 was built without <GL/osmesa.h> (Debian: libosmesa6-dev)";
-  return nullptr;
-}
-OsMesaSurface::~OsMesaSurface() = default;
-bool OsMesaSurface::make_current() { return false; }
-void OsMesaSurface::resize(int, int) {}
-void OsMesaSurface::fill(Table&) const {}
-void OsMesaSurface::read_rgba(unsigned char*) {}
-
-#endif
 
 }  // namespace ffc::classic

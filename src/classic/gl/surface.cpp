@@ -1,5 +1,5 @@
-// ffcompat_surface.h: a drawing surface on soft (ours, through backends::make) or mesa (OSMesa,
-// osmesa.h), each with its table of entry points for the exports.
+// ffcompat_surface.h: a drawing surface on soft (ours, through backends::make) or mesa (OSMesa or
+// EGL, mesa_surface.h), each with its table of entry points for the exports.
 #include "ffcompat_surface.h"
 
 #include <GL/gl.h>
@@ -13,7 +13,7 @@
 
 #include "backends/backend.h"
 #include "image/image.h"
-#include "osmesa.h"
+#include "mesa_surface.h"
 #include "raster/raster.h"
 #include "state/context.h"
 #include "state/soft_gl.h"
@@ -24,12 +24,16 @@ struct ffcompat_surface {
   int width = 0, height = 0;
   ffc::classic::Table table;
   std::unique_ptr<ffc::backends::Backend> soft;  // one of these two
-  std::unique_ptr<ffc::classic::OsMesaSurface> mesa;
+  std::unique_ptr<ffc::classic::MesaSurface> mesa;
+  std::string platform;  // mesa's: "osmesa" or "egl"
 };
 
 namespace {
 
 using ffc::classic::Table;
+
+// The surface current on this thread, for ffcompat_surface_make_current(nullptr) to release.
+thread_local ffcompat_surface* g_surface = nullptr;
 
 // Every soft variant answers the same names: those of state::proc_address.
 const Table& soft_table() {
@@ -82,9 +86,10 @@ ffcompat_surface* ffcompat_surface_create(int width, int height) {
   try {
     if (name == "mesa") {
       std::string why;
-      s->mesa = ffc::classic::OsMesaSurface::make(width, height, why);
+      s->mesa = ffc::classic::make_mesa_surface(width, height, s->platform, why);
       if (!s->mesa) {
-        std::fprintf(stderr, "ffcompat: the mesa backend is unavailable: %s\n", why.c_str());
+        std::fprintf(stderr, "ffcompat: the mesa backend is unavailable%s: %s\n",
+                     s->platform.empty() ? "" : (" on " + s->platform).c_str(), why.c_str());
         return nullptr;
       }
       s->mesa->fill(s->table);
@@ -99,17 +104,23 @@ ffcompat_surface* ffcompat_surface_create(int width, int height) {
   }
   s->table.backend = s->backend.c_str();
   ffc::classic::g_current = &s->table;
+  g_surface = s.get();
   return s.release();
 }
 
 void ffcompat_surface_make_current(ffcompat_surface* s) {
   if (!s) {
+    // EGL keeps a context current until told otherwise, and a window's own EGL context (our
+    // GLUT's GLFW window) is about to be made current: ours is released first.
+    if (g_surface && g_surface->mesa) g_surface->mesa->release();
     ffc::classic::g_current = nullptr;
+    g_surface = nullptr;
     return;
   }
   try {
     if (s->mesa ? s->mesa->make_current() : (s->soft->resume(), true)) {
       ffc::classic::g_current = &s->table;
+      g_surface = s;
       return;
     }
     std::fprintf(stderr, "ffcompat: cannot make the %s surface current\n", s->backend.c_str());
@@ -129,7 +140,12 @@ void ffcompat_surface_read_rgba(ffcompat_surface* s, unsigned char* out) {
 int ffcompat_surface_resize(ffcompat_surface* s, int width, int height) {
   if (!s || !valid_size(width, height)) return -1;
   if (s->mesa) {
-    s->mesa->resize(width, height);
+    try {
+      s->mesa->resize(width, height);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ffcompat: cannot resize the %s surface: %s\n", s->backend.c_str(), e.what());
+      return -1;
+    }
   } else {
     // The soft context is reached by making it current (the backend keeps it to itself); the
     // context that was current before comes back after. A new Framebuffer is all a size is: the
@@ -155,6 +171,7 @@ const char* ffcompat_surface_backend(const ffcompat_surface* s) { return s ? s->
 void ffcompat_surface_destroy(ffcompat_surface* s) {
   if (!s) return;
   if (ffc::classic::g_current == &s->table) ffc::classic::g_current = nullptr;
+  if (g_surface == s) g_surface = nullptr;
   delete s;
 }
 
