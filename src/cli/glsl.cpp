@@ -1,6 +1,7 @@
 // ffcompat glsl: the GLSL programs the GLSL backend generates for a scene, with their uniforms'
 // values after the frame: the fixed-function state of a scene written as shaders, a porting aid.
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 
 #include "cli/common.h"
@@ -14,7 +15,19 @@ void add_glsl(CLI::App& app) {
   auto* cmd = app.add_subcommand("glsl", "Print the GLSL 330 programs the glsl backend generates for a scene, and their uniforms");
   auto opts = std::make_shared<SceneOptions>();
   auto json = std::make_shared<bool>(false);
+  auto frames = std::make_shared<int>(1);
+  auto shading = std::make_shared<std::string>("gouraud");
+  auto out = std::make_shared<std::string>();
   opts->add_to(cmd, true, false);
+  cmd->add_option("--frames", *frames, "Frames drawn (the later ones find their programs in the cache)")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--shading", *shading,
+                  "gouraud (GL's: lit per vertex) or phong (the same equation per fragment, from the interpolated "
+                  "eye-space normal and position)")
+      ->check(CLI::IsMember({"gouraud", "phong"}))
+      ->capture_default_str();
+  cmd->add_option("--out", *out, "Also write the last frame's picture (PNG)");
   refuse_option(cmd, "--backend", "glsl always draws on the glsl backend");
   cmd->add_flag("--json", *json, "Print the programs as JSON");
   cmd->callback([=] {
@@ -22,8 +35,14 @@ void add_glsl(CLI::App& app) {
     throw std::invalid_argument("backend 'glsl' is not built: EGL was not found at configure time");
 #else
     const scene::Description desc = opts->description();
-    backends::GlslBackend b;
-    scene::render(desc, b);
+    backends::GlslBackend b(*shading == "phong");
+    image::Image picture = scene::render(desc, b);
+    if (*frames > 1) {
+      const std::function<void()> frame = scene::frame(desc);  // the meshes built once
+      for (int f = 1; f < *frames; ++f) frame();
+      picture = b.read();
+    }
+    if (!out->empty()) image::write_png(*out, picture);
     const glsl::Stats& st = b.renderer()->stats();
     if (*json) {
       nlohmann::json programs = nlohmann::json::array();
@@ -42,6 +61,8 @@ void add_glsl(CLI::App& app) {
                             {"uniforms", u}});
       }
       print_json({{"scene", opts->json(desc)},
+                  {"frames", *frames},
+                  {"shading", *shading},
                   {"draws", st.draws},
                   {"compiles", st.compiles},
                   {"cache_hits", st.cache_hits},

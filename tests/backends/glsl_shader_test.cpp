@@ -25,6 +25,12 @@ TEST(GlslPrimitives, FlatQuadsSplitWithTheFourthVertexLast) {
   EXPECT_EQ(list(GL_QUADS, 4, {}, GL_TRIANGLES), (std::vector<uint32_t>{0, 1, 2, 0, 2, 3}));
 }
 
+TEST(GlslPrimitives, FlatQuadStripsPutTheirFourthVertexLast) {
+  SplitRule flat;
+  flat.flat = true;
+  EXPECT_EQ(list(GL_QUAD_STRIP, 4, flat, GL_TRIANGLES), (std::vector<uint32_t>{0, 1, 3, 2, 0, 3}));
+}
+
 TEST(GlslPrimitives, FlatPolygonsPutTheFirstVertexLastKeepingTheWinding) {
   SplitRule flat;
   flat.flat = true;

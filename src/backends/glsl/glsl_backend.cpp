@@ -25,6 +25,7 @@ void GlslBackend::begin(int width, int height) {
   for (const std::string& name : gl_.load(&platform::EglContext::proc_address))
     throw std::runtime_error("glsl: the core-profile context has no " + name);
   renderer_ = std::make_unique<glsl::Renderer>(gl_);
+  renderer_->set_phong(phong_);
   context_ = std::make_unique<state::Context>(width, height, state::Precision::Float);
   context_->set_draw_sink(renderer_.get());
   resume();
@@ -48,8 +49,11 @@ void GlslBackend::read_into(image::Image& img) {
 
 }  // namespace ffc::backends
 
-// Offers "glsl" to backends::make(). ffcompat_glsl's users link with -u naming this symbol, so the
+// Offers "glsl" and "glsl-phong" to backends::make(). ffcompat_glsl's users link with -u naming this symbol, so the
 // linker keeps this object, and its registration, out of the static library.
 extern "C" const bool ffcompat_glsl_backend_registered;
 const bool ffcompat_glsl_backend_registered = ffc::backends::register_backend(
     "glsl", []() -> std::unique_ptr<ffc::backends::Backend> { return std::make_unique<ffc::backends::GlslBackend>(); });
+extern "C" const bool ffcompat_glsl_phong_registered;
+const bool ffcompat_glsl_phong_registered = ffc::backends::register_backend(
+    "glsl-phong", []() -> std::unique_ptr<ffc::backends::Backend> { return std::make_unique<ffc::backends::GlslBackend>(true); });

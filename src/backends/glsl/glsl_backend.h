@@ -14,8 +14,10 @@ namespace ffc::backends {
 
 class GlslBackend final : public Backend {
  public:
+  // phong: lit, smooth draws evaluate the equation per fragment ("glsl-phong").
+  explicit GlslBackend(bool phong = false) : phong_(phong) {}
   ~GlslBackend() override;
-  std::string name() const override { return "glsl"; }
+  std::string name() const override { return phong_ ? "glsl-phong" : "glsl"; }
   void begin(int width, int height) override;
   void resume() override;
   void read_into(image::Image& out) override;
@@ -25,6 +27,7 @@ class GlslBackend final : public Backend {
   state::Context* context() { return context_.get(); }
 
  private:
+  bool phong_;
   std::unique_ptr<platform::EglContext> egl_;
   glsl::CoreGl gl_;
   std::unique_ptr<glsl::Renderer> renderer_;

@@ -33,18 +33,19 @@ GLenum decompose(GLenum mode, const uint32_t* e, size_t n, const SplitRule& rule
       break;
     case GL_QUADS:  // the 4th vertex provokes
       for (size_t i = 0; i + 3 < n; i += 4) {
-        if (rule.flat || rule.any_outside || rule.from_elements) put({i, i + 1, i + 3}), put({i + 1, i + 2, i + 3});
+        if (rule.flat || rule.any_outside || rule.from_elements || rule.pipeline) put({i, i + 1, i + 3}), put({i + 1, i + 2, i + 3});
         else put({i, i + 1, i + 2}), put({i, i + 2, i + 3});  // smooth: the provoking vertex does not matter
       }
       break;
     case GL_QUAD_STRIP:  // quad (2i, 2i+1, 2i+3, 2i+2); 2i+3 provokes
       for (size_t i = 0; i + 3 < n; i += 2) {
-        if (rule.any_outside) put({i + 2, i, i + 3}), put({i, i + 1, i + 3});
+        if (rule.any_outside || rule.pipeline) put({i + 2, i, i + 3}), put({i, i + 1, i + 3});
+        else if (rule.flat) put({i, i + 1, i + 3}), put({i + 2, i, i + 3});  // the same two, 2i+3 last
         else put({i, i + 1, i + 3}), put({i, i + 3, i + 2});
       }
       break;
     case GL_POLYGON:  // a fan from the first vertex, which provokes: put last when flat
-      for (size_t i = 1; i + 1 < n; ++i) rule.flat ? put({i, i + 1, 0}) : put({0, i, i + 1});
+      for (size_t i = 1; i + 1 < n; ++i) rule.flat || rule.pipeline ? put({i, i + 1, 0}) : put({0, i, i + 1});
       break;
   }
   return GL_TRIANGLES;

@@ -16,6 +16,7 @@ struct SplitRule {
   bool flat = false;         // GL_FLAT
   bool from_elements = false;  // glDrawElements
   bool any_outside = false;  // a vertex outside the view volume: Mesa's draw pipeline splits the quads
+  bool pipeline = false;     // as Mesa's draw pipeline assembles for feedback (the vertex check)
 };
 
 // The list for `count` vertices of `mode` (elements[k] names vertex k when elements is not null):

@@ -178,12 +178,12 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
                     const uint32_t* indices, size_t index_count) {
   const size_t n = indices ? index_count : count;
   SplitRule rule;
-  rule.flat = s.flat, rule.from_elements = indices != nullptr;
+  rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_;
   if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
   const GLenum list_mode = decompose(mode, indices, n, rule, list_);
   if (list_.empty()) return;
   ++stats_.draws;
-  Program& p = program_for(ProgramKey::of(s));
+  Program& p = program_for(ProgramKey::of(s, phong_));
   ++p.info.draws;
   gl_.UseProgram(p.id);
   upload(p, s);

@@ -52,6 +52,7 @@ class Renderer final : public state::DrawSink {
   void read_back(uint8_t* rgba, int width, int height) override;
 
   void set_capture(bool on) { capture_ = on; }
+  void set_phong(bool on) { phong_ = on; }  // lit smooth draws lit per fragment
   const std::vector<CapturedDraw>& captured() const { return captured_; }
   const Stats& stats() const { return stats_; }
   std::vector<const ProgramInfo*> programs() const;  // in the order they were made
@@ -75,7 +76,7 @@ class Renderer final : public state::DrawSink {
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0, tfb_ = 0;
   std::map<uint64_t, Program> programs_;
   std::vector<uint32_t> list_;
-  bool capture_ = false;
+  bool capture_ = false, phong_ = false;
   std::vector<CapturedDraw> captured_;
   Stats stats_;
   std::set<std::string> unsupported_;

@@ -46,9 +46,10 @@ struct UniformList {
 
 }  // namespace
 
-ProgramKey ProgramKey::of(const state::SinkState& s) {
+ProgramKey ProgramKey::of(const state::SinkState& s, bool phong) {
   ProgramKey k;
   k.lit = s.lighting;
+  k.phong = phong && s.lighting && !s.flat;  // GL_FLAT keeps one colour per primitive
   k.key = s.lighting ? s.key : lighting::Key{};
   k.flat = s.flat;
   if (k.lit && k.key.color_material()) k.cm_faces = unsigned(s.model.cm_faces), k.cm_mode = s.model.cm_mode;
@@ -59,11 +60,12 @@ uint64_t ProgramKey::packed() const {
   // Only the bits a program's code depends on: the shininess-0 bit changes no code here.
   const uint64_t extra = key.extra & ~(1u << lighting::Key::kShininessZero);
   return uint64_t(key.bits) | extra << 32 | uint64_t(lit) << 42 | uint64_t(flat) << 43 | uint64_t(cm_faces & 3) << 44 |
-         uint64_t(cm_mode & 0xFFFF) << 46;
+         uint64_t(cm_mode & 0xFFFF) << 46 | uint64_t(phong) << 62;
 }
 
 bool ProgramKey::needs_eye_position() const {
   if (!lit) return false;
+  if (phong) return true;
   if (key.local_viewer()) return true;
   for (int i = 0; i < 8; ++i)
     if (key.enabled(i) && key.local(i)) return true;
@@ -186,66 +188,118 @@ std::string face_code(const ProgramKey& k, int f) {
 
 }  // namespace
 
-Sources generate(const ProgramKey& k) {
-  Sources s;
-  const std::string q = k.flat ? "flat " : "";
-  std::string v = "#version 330 core\n// ffcompat: generated from lighting key " + [&] {
-    char b[64];
-    std::snprintf(b, sizeof b, "%08x/%03x", k.key.bits, k.key.extra);
-    return std::string(b);
-  }() + (k.lit ? ", lighting on" : ", lighting off") + (k.flat ? ", GL_FLAT" : ", GL_SMOOTH") + "\n";
-  v += "layout(location = 0) in vec4 a_position;\n";
-  if (k.lit) v += "layout(location = 1) in vec3 a_normal;\n";
-  v += "layout(location = 2) in vec4 a_color;\n";
-  for (const Uniform& u : uniforms(k, nullptr)) v += std::string("uniform ") + u.type + " " + u.name + ";\n";
+namespace {
+
+std::string header(const ProgramKey& k) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%08x/%03x", k.key.bits, k.key.extra);
+  return std::string("#version 330 core\n// ffcompat: generated from lighting key ") + b +
+         (k.lit ? ", lighting on" : ", lighting off") + (k.flat ? ", GL_FLAT" : ", GL_SMOOTH") +
+         (k.phong ? ", per fragment (phong)" : "") + "\n";
+}
+
+// The helpers the lighting code calls, and every uniform (a stage ignores those it does not read).
+std::string declarations(const ProgramKey& k) {
+  std::string d;
+  for (const Uniform& u : uniforms(k, nullptr)) d += std::string("uniform ") + u.type + " " + u.name + ";\n";
+  // Clamped to [0, 1]; a NaN to 1, as the fixed-function clamp does.
+  d += "vec4 saturate(vec4 c) {\n"
+       "  return mix(clamp(c, 0.0, 1.0), vec4(1.0), isnan(c));\n"
+       "}\n";
+  bool spot = false;
+  for (int i = 0; i < 8; ++i) spot |= k.key.enabled(i) && k.key.spot(i);
+  if (k.lit && (k.key.specular() || spot))
+    // pow(x, 0) is 1 for every x, and pow(0, e > 0) is 0, as C's pow: GLSL leaves both open.
+    d += "float power(float x, float e) {\n"
+         "  return e == 0.0 ? 1.0 : x <= 0.0 ? 0.0 : pow(x, e);\n"
+         "}\n";
+  return d;
+}
+
+// The eye-space normal from a_normal (normalized or rescaled as the key says).
+std::string eye_normal(const ProgramKey& k) {
+  // A row vector times M^-1: the normal by the inverse transpose of the modelview.
+  std::string c = "  vec3 normal = a_normal * u_normal_inverse;\n";
+  if (k.key.normalize()) c += "  float len = length(normal);\n  normal = len > 0.0 ? normal / len : normal;\n";
+  else if (k.key.rescale()) c += "  normal /= u_rescale;\n";
+  return c;
+}
+
+// The lighting of both faces from `eye` and `normal`, into v_front (v_back, the secondaries).
+std::string lighting_code(const ProgramKey& k) {
+  std::string c;
+  if (k.key.local_viewer())
+    c += "  float eye_len = length(eye);\n  vec3 to_eye = eye_len > 0.0 ? -eye / eye_len : vec3(0.0);\n";
+  else
+    c += "  const vec3 to_eye = vec3(0.0, 0.0, 1.0);\n";
+  c += face_code(k, 0);
+  if (k.two_side()) c += face_code(k, 1);
+  return c;
+}
+
+std::vector<std::string> colour_varyings(const ProgramKey& k) {
   std::vector<std::string> outs = {"v_front"};
   if (k.two_side()) outs.push_back("v_back");
   if (k.secondary()) {
     outs.push_back("v_front_secondary");
     if (k.two_side()) outs.push_back("v_back_secondary");
   }
-  for (const std::string& o : outs) v += q + "out vec4 " + o + ";\n";
-  // Clamped to [0, 1]; a NaN to 1, as the fixed-function clamp does.
-  v += "vec4 saturate(vec4 c) {\n"
-       "  return mix(clamp(c, 0.0, 1.0), vec4(1.0), isnan(c));\n"
-       "}\n";
-  if (k.lit && (k.key.specular() || [&] {
-        for (int i = 0; i < 8; ++i)
-          if (k.key.enabled(i) && k.key.spot(i)) return true;
-        return false;
-      }()))
-    // pow(x, 0) is 1 for every x, and pow(0, e > 0) is 0, as C's pow: GLSL leaves both open.
-    v += "float power(float x, float e) {\n"
-         "  return e == 0.0 ? 1.0 : x <= 0.0 ? 0.0 : pow(x, e);\n"
-         "}\n";
-  v += "void main() {\n  gl_Position = u_mvp * a_position;\n";
-  if (!k.lit) {
-    v += "  v_front = saturate(a_color);\n}\n";
-  } else {
-    if (k.needs_eye_position()) v += "  vec3 eye = (u_modelview * a_position).xyz;\n";
-    // A row vector times M^-1: the normal by the inverse transpose of the modelview.
-    v += "  vec3 normal = a_normal * u_normal_inverse;\n";
-    if (k.key.normalize())
-      v += "  float len = length(normal);\n  normal = len > 0.0 ? normal / len : normal;\n";
-    else if (k.key.rescale())
-      v += "  normal /= u_rescale;\n";
-    if (k.key.local_viewer()) v += "  float eye_len = length(eye);\n  vec3 to_eye = eye_len > 0.0 ? -eye / eye_len : vec3(0.0);\n";
-    else v += "  const vec3 to_eye = vec3(0.0, 0.0, 1.0);\n";
-    v += face_code(k, 0);
-    if (k.two_side()) v += face_code(k, 1);
-    v += "}\n";
-  }
-  std::string fr = "#version 330 core\n";
-  for (const std::string& o : outs) fr += q + "in vec4 " + o + ";\n";
-  fr += "out vec4 o_color;\nvoid main() {\n";
-  fr += k.two_side() ? "  o_color = gl_FrontFacing ? v_front : v_back;\n" : "  o_color = v_front;\n";
+  return outs;
+}
+
+// The fragment's colour from v_front (v_back, the secondaries), varyings or locals.
+std::string colour_sum(const ProgramKey& k) {
+  std::string fr = k.two_side() ? "  o_color = gl_FrontFacing ? v_front : v_back;\n" : "  o_color = v_front;\n";
   if (k.secondary()) {
     // The colour sum (GL 2.1 section 3.9): the secondary colour's rgb added after interpolation.
     fr += k.two_side() ? "  vec4 secondary = gl_FrontFacing ? v_front_secondary : v_back_secondary;\n"
                        : "  vec4 secondary = v_front_secondary;\n";
     fr += "  o_color = clamp(o_color + vec4(secondary.rgb, 0.0), 0.0, 1.0);\n";
   }
-  fr += "}\n";
+  return fr;
+}
+
+// Per fragment: the vertex shader hands on the eye-space position and normal and the colour; the
+// fragment shader runs the same equation on them, interpolated, the normal made unit again.
+Sources generate_phong(const ProgramKey& k) {
+  Sources s;
+  std::string v = header(k) + "layout(location = 0) in vec4 a_position;\nlayout(location = 1) in vec3 a_normal;\n"
+                              "layout(location = 2) in vec4 a_color;\n";
+  v += declarations(k) + "out vec3 v_eye;\nout vec3 v_normal;\nout vec4 v_color;\n";
+  v += "void main() {\n  gl_Position = u_mvp * a_position;\n  v_eye = (u_modelview * a_position).xyz;\n";
+  v += eye_normal(k) + "  v_normal = normal;\n  v_color = a_color;\n}\n";
+  std::string fr = header(k) + declarations(k) + "in vec3 v_eye;\nin vec3 v_normal;\nin vec4 v_color;\n";
+  fr += "out vec4 o_color;\nvoid main() {\n  vec3 eye = v_eye;\n  vec3 normal = v_normal;\n  vec4 a_color = v_color;\n";
+  // Interpolation shortens unit normals between the vertices: made unit again (Phong's shading).
+  fr += "  float len = length(normal);\n  normal = len > 0.0 ? normal / len : normal;\n";
+  for (const std::string& o : colour_varyings(k)) fr += "  vec4 " + o + ";\n";
+  fr += lighting_code(k) + colour_sum(k) + "}\n";
+  s.vertex = v, s.fragment = fr;
+  s.feedback = {"gl_Position", "v_color"};
+  return s;
+}
+
+}  // namespace
+
+Sources generate(const ProgramKey& k) {
+  if (k.phong && k.lit) return generate_phong(k);
+  Sources s;
+  const std::string q = k.flat ? "flat " : "";
+  std::string v = header(k) + "layout(location = 0) in vec4 a_position;\n";
+  if (k.lit) v += "layout(location = 1) in vec3 a_normal;\n";
+  v += "layout(location = 2) in vec4 a_color;\n" + declarations(k);
+  const std::vector<std::string> outs = colour_varyings(k);
+  for (const std::string& o : outs) v += q + "out vec4 " + o + ";\n";
+  v += "void main() {\n  gl_Position = u_mvp * a_position;\n";
+  if (!k.lit) {
+    v += "  v_front = saturate(a_color);\n}\n";
+  } else {
+    if (k.needs_eye_position()) v += "  vec3 eye = (u_modelview * a_position).xyz;\n";
+    v += eye_normal(k) + lighting_code(k) + "}\n";
+  }
+  std::string fr = "#version 330 core\n";
+  for (const std::string& o : outs) fr += q + "in vec4 " + o + ";\n";
+  fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + "}\n";
   s.vertex = v, s.fragment = fr;
   s.feedback = {"gl_Position", "v_front"};
   if (k.two_side()) s.feedback.push_back("v_back");

@@ -19,8 +19,9 @@ struct ProgramKey {
   bool flat = false;       // GL_FLAT: the colours are `flat` varyings (the last vertex provokes)
   unsigned cm_faces = 0;   // colour material per vertex (the key's bit): bit 0 front, bit 1 back
   unsigned cm_mode = 0;    // and the material parameter it tracks (GL_AMBIENT ... GL_AMBIENT_AND_DIFFUSE)
+  bool phong = false;      // the equation per fragment (--shading phong), lit and smooth only
 
-  static ProgramKey of(const state::SinkState& s);
+  static ProgramKey of(const state::SinkState& s, bool phong = false);
   uint64_t packed() const;  // equal keys, equal numbers: the program cache's key
   bool two_side() const { return lit && key.two_side(); }
   bool secondary() const { return lit && key.separate_specular() && key.any_light() && key.specular(); }
