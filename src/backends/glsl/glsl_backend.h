@@ -27,6 +27,7 @@ class GlslBackend final : public Backend {
   state::Context* context() { return context_.get(); }
 
  private:
+  void bind();  // this backend's EGL context current, for certain
   bool phong_;
   std::unique_ptr<platform::EglContext> egl_;
   glsl::CoreGl gl_;
