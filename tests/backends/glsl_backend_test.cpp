@@ -198,6 +198,24 @@ TEST(GlslBackend, PhongShadingIsCloserToTheExactSphereThanGouraud) {
   EXPECT_LT(ep, 0.6 * eg) << "mean step error: phong " << ep << ", gouraud " << eg;
 }
 
+// OSMesa and EGL share Mesa's dispatch: frames taken in turns with Mesa (as ffcompat bench does)
+// draw the GLSL backend's own picture (the calls once reached OSMesa's context and crashed).
+TEST(GlslBackend, FramesInTurnsWithMesaDrawItsOwnPicture) {
+  if (!egl_here()) GTEST_SKIP();
+  const scene::Spec s = scene::builtin("cube");
+  auto alone = backends::make("glsl");
+  const image::Image want = scene::render(s, *alone);
+  auto mesa = backends::make("mesa"), ours = backends::make("glsl");
+  ours->begin(s.width, s.height), mesa->begin(s.width, s.height);
+  for (int turn = 0; turn < 2; ++turn) {
+    mesa->resume(), scene::draw(s);
+    const image::Image m = mesa->read();
+    ours->resume(), scene::draw(s);
+    EXPECT_EQ(image::compare(want, ours->read()).max_diff, 0);
+    EXPECT_LE(image::compare(m, want).max_diff, 1);
+  }
+}
+
 TEST(GlslBackend, OneProgramPerKeyThenCacheHits) {
   if (!egl_here()) GTEST_SKIP();
   backends::GlslBackend b;
