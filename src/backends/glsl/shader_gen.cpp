@@ -155,7 +155,7 @@ std::string face_code(const ProgramKey& k, int f) {
     std::string indent = "      ";
     if (key.spot(i)) {
       c += "      float cos_angle = dot(-vp, " + L("spot_direction") + ");\n";
-      c += "      if (cos_angle >= " + L("spot_cos") + ") {  // outside the cone: no term at all\n";
+      c += "      if (cos_angle >= " + L("spot_cos") + ") {  // inside the cone; outside it, no term at all\n";
       c += "        att *= power(max(0.0, cos_angle), " + L("spot_exponent") + ");\n";
       indent = "        ";
     }
