@@ -1,5 +1,6 @@
 // ffcompat check: our pipeline against Mesa's. --level vertex compares lit colours vertex by
-// vertex through feedback mode; --level pixel compares the pictures.
+// vertex through feedback mode (the GLSL backend's through transform feedback); --level pixel
+// compares the pictures. --backend names ours: soft, or glsl (a build with EGL).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -8,6 +9,12 @@
 #include "cli/common.h"
 
 namespace ffc::cli {
+
+// --backend glsl --level vertex (check_glsl.cpp): the generated shaders' colours against Mesa's
+// feedback. Throws CLI::RuntimeError(2) when the check fails.
+void check_glsl_vertices(const scene::Description& desc, const nlohmann::json& scene, double tolerance, bool json);
+// "largest at primitive P vertex V ...": where ours is furthest from Mesa (check_glsl.cpp).
+void print_largest(size_t primitive, size_t vertex, const check::FeedbackVertex& mesa, const check::FeedbackVertex& ours);
 
 void add_check(CLI::App& app) {
   auto* cmd = app.add_subcommand("check", "Check our pipeline against Mesa's, vertex by vertex or pixel by pixel");
@@ -18,9 +25,12 @@ void add_check(CLI::App& app) {
   auto max_steps = std::make_shared<int>(1);
   auto out = std::make_shared<std::string>("check-failures");
   opts->add_to(cmd, true, false);
-  refuse_option(cmd, "--backend",
-                "check always draws on mesa (Mesa's pipeline, the reference) and on ours, soft and soft-double; "
-                "there is no backend to choose");
+  auto backend = std::make_shared<std::string>("soft");
+  cmd->add_option("--backend", *backend,
+                  "ours to check against mesa: soft (float and double) or glsl (the generated shaders; transform "
+                  "feedback at --level vertex)")
+      ->check(CLI::IsMember({"soft", "glsl"}))
+      ->capture_default_str();
   cmd->add_option("--level", *level, "vertex or pixel")->check(CLI::IsMember({"vertex", "pixel"}))->capture_default_str();
   const CLI::Option* tolerance_opt =
       cmd->add_option("--tolerance", *tolerance, "vertex: largest colour difference that passes")->capture_default_str();
@@ -36,26 +46,27 @@ void add_check(CLI::App& app) {
     if (*level == "pixel" && tolerance_opt->count())
       throw std::invalid_argument("--tolerance applies to --level vertex; --level pixel takes --max-diff");
     const scene::Description desc = opts->description();
+    if (*level == "vertex" && *backend == "glsl") return check_glsl_vertices(desc, opts->json(desc), *tolerance, *json);
     if (*level == "pixel") {
-      auto mesa = backends::make("mesa"), soft = backends::make("soft");
+      auto mesa = backends::make("mesa"), soft = backends::make(*backend);
       const image::Image a = scene::render(desc, *mesa), b = scene::render(desc, *soft);
       const image::Diff d = image::compare(a, b);
       const bool pass = d.max_diff <= *max_steps;
       nlohmann::json j = to_json(d);
-      j["level"] = "pixel", j["scene"] = opts->json(desc), j["max_allowed"] = *max_steps, j["pass"] = pass;
+      j["level"] = "pixel", j["backend"] = *backend, j["scene"] = opts->json(desc), j["max_allowed"] = *max_steps, j["pass"] = pass;
       add_platform(j, "mesa");
       if (!pass) {  // the evidence, for a person to look at
         namespace fs = std::filesystem;
         fs::create_directories(*out);
         image::write_png((fs::path(*out) / "mesa.png").string(), a);
-        image::write_png((fs::path(*out) / "soft.png").string(), b);
+        image::write_png((fs::path(*out) / (*backend + ".png")).string(), b);
         image::write_png((fs::path(*out) / "diff.png").string(), image::heat_map(a, b));
         j["written"] = *out;
       }
       if (*json)
         print_json(j);
       else
-        std::printf("max_diff %d steps, differing %.4f%%, rmse %.4f, psnr %.2f dB\n%s (max %d)%s\n", d.max_diff,
+        std::printf("%s against mesa: max_diff %d steps, differing %.4f%%, rmse %.4f, psnr %.2f dB\n%s (max %d)%s\n", backend->c_str(), d.max_diff,
                     100 * d.differing_share, d.rmse, d.psnr, pass ? "PASS" : "FAIL", *max_steps,
                     pass ? "" : ("; pictures in " + *out).c_str());
       if (!pass) throw CLI::RuntimeError(2);
@@ -91,13 +102,7 @@ void add_check(CLI::App& app) {
       std::printf("float  vs Mesa: max %.3g, rms %.3g\ndouble vs Mesa: max %.3g, rms %.3g\n"
                   "window positions agree within %.3g px\n",
                   r.max_abs, r.rms, r.max_abs_double, r.rms_double, r.max_position);
-      if (r.max_abs > 0) {
-        const auto &m = r.worst_mesa, &o = r.worst_ours;
-        std::printf("largest at primitive %zu vertex %zu, window (%.2f, %.2f): Mesa (%.6f %.6f %.6f %.6f), ours "
-                    "(%.6f %.6f %.6f %.6f)\n",
-                    r.worst_primitive, r.worst_vertex, m.position.x, m.position.y, m.color.r, m.color.g, m.color.b,
-                    m.color.a, o.color.r, o.color.g, o.color.b, o.color.a);
-      }
+      if (r.max_abs > 0) print_largest(r.worst_primitive, r.worst_vertex, r.worst_mesa, r.worst_ours);
       for (const auto& d : r.known_mesa_deviations) std::printf("known Mesa deviation: %s\n", d.c_str());
       std::printf("%s (tolerance %g)\n", pass ? "PASS" : "FAIL", *tolerance);
     }

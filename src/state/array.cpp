@@ -46,7 +46,9 @@ void Context::fetch_vertex(GLint i, Fixed f) {
     Color(c.r, c.g, c.b, c.a, color_array_.size);
   }
   fetch_texcoord(i);
-  if (vertex_array_.enabled) process_vertex(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
+  if (!vertex_array_.enabled) return;
+  const glm::dvec4 obj = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
+  sink_draws() ? sink_vertex(obj) : process_vertex(obj);  // a sink draws at glEnd (draw_sink.cpp)
 }
 
 // An enabled array that was never given a pointer: GL 2.1 leaves reading it undefined and Mesa

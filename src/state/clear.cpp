@@ -20,6 +20,7 @@ void Context::Clear(GLbitfield mask) {
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT))
     return error(GL_INVALID_VALUE);
   if (render_mode_ != GL_RENDER) return;
+  if (sink_) return sink_->clear(sink_state(), mask);  // draw_sink.h
   if (clear_with_fragment_ops(mask)) return;  // fragment.cpp
   raster::ClearRequest& c = pending_clear_;  // a later clear of the same buffer replaces an earlier one
   if (mask & GL_COLOR_BUFFER_BIT) c.color = true, c.clear_color = clear_color_;

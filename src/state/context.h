@@ -19,6 +19,7 @@
 
 #include "lighting/lighting.h"
 #include "state/display_list.h"
+#include "state/draw_sink.h"
 #include "state/float_matrix.h"
 #include "state/selection.h"
 #include "state/fragment.h"
@@ -234,6 +235,11 @@ class Context {
   // (src/classic/gl) uses it for an entry point soft does not implement: GL_INVALID_OPERATION.
   void record_error(GLenum e) { error(e); }
 
+  // Not GL: a sink that draws instead of the vertex stage and rasterizer while rendering
+  // (draw_sink.h; the GLSL backend's), and the state it reads (draw_sink.cpp).
+  void set_draw_sink(DrawSink* s) { sink_ = s; }
+  SinkState sink_state();
+
   // Not GL: what the checker and tests read.
   lighting::Key key() const;
   const lighting::LightParams& light(int i) const { return lights_[i]; }
@@ -334,6 +340,16 @@ class Context {
   void flush_primitive();  // primitive.cpp, through its Assembly
   friend class Assembly;
 
+  DrawSink* sink_ = nullptr;  // draw_sink.cpp: the hand-over to a sink
+  std::vector<SinkVertex> sink_verts_;
+  bool sink_draws() const { return sink_ && render_mode_ == GL_RENDER; }
+  void sink_vertex(const glm::dvec4& obj);
+  void sink_end();
+  void sink_fetch(GLint first, GLsizei count);  // array elements into sink_verts_
+  void sink_arrays(GLenum mode, GLint first, GLsizei count);
+  void sink_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
+  void sink_read_back();  // the sink's picture into fb_, before soft reads or writes it
+  bool sink_refuses(const char* what);  // a call a sink cannot draw: GL_INVALID_OPERATION, named once
   raster::Framebuffer fb_;
   // glClear waits here until something draws or reads: a triangle list clears band by band, on
   // the threads that draw the bands; anything else calls flush_clear() first.

@@ -55,6 +55,7 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   // draws nothing.
   if (first < 0 || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
+  if (sink_draws()) return sink_arrays(mode, first, count);  // draw_sink.cpp
   prim_mode_ = mode;
   verts_.clear();
   if (triangle_list_path(mode)) {
@@ -82,6 +83,7 @@ void Context::DrawElements(GLenum mode, GLsizei count, GLenum type, const void* 
 void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
   if (!indices || !arrays_readable() || !fits_in_memory(uint64_t(count))) return;
   begin_draw();
+  if (sink_draws()) return sink_elements(mode, count, type, indices);  // draw_sink.cpp
   prim_mode_ = mode;
   verts_.clear();
   // Each array element in the indices' range is transformed and lit once, however often the

@@ -108,6 +108,7 @@ void Context::vbo_wrap(bool alpha_one) {
 void Context::Vertex(double x, double y, double z, double w) {
   if (!in_begin_) return stray_vertex();  // outside glBegin/glEnd a vertex draws nothing (undefined in GL)
   format_has_position_ = !spec_;
+  if (sink_draws()) return sink_vertex({x, y, z, w});  // drawn at glEnd (draw_sink.cpp)
   process_vertex({x, y, z, w});
 }
 
@@ -144,6 +145,7 @@ void Context::Begin(GLenum mode) {
   prim_mode_ = mode;
   texcoord_varies_ = false;
   verts_.clear();
+  sink_verts_.clear();
   // Triangles in immediate mode take the triangle-list path: the vertices are kept as sent and
   // lit together at glEnd, unless a glMaterial between them changes the lighting
   // (leave_triangle_list()).
@@ -168,6 +170,7 @@ void Context::leave_triangle_list() {
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = false;
+  if (sink_draws()) return sink_end(), flush_stored_keeping_format();  // draw_sink.cpp
   if (!immediate_list_) {
     flush_primitive();
     return flush_stored_keeping_format();

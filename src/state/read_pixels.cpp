@@ -323,6 +323,7 @@ void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, 
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);  // Mesa checks the size before the format
   if (const GLenum e = read_pixels_error(format, type)) return error(e);
+  sink_read_back();  // draw_sink.cpp: a sink's picture is read, not soft's
   flush_clear();
   auto store = [this](GLenum p) {
     const auto it = pixel_store_.find(p);

@@ -1,0 +1,241 @@
+#include "backends/glsl/renderer.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "backends/glsl/primitives.h"
+#include "raster/raster.h"
+
+namespace ffc::glsl {
+
+namespace {
+
+GLuint compile(const CoreGl& gl, GLenum type, const std::string& src) {
+  const GLuint s = gl.CreateShader(type);
+  const char* text = src.c_str();
+  gl.ShaderSource(s, 1, &text, nullptr);
+  gl.CompileShader(s);
+  GLint ok = 0;
+  gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    gl.GetShaderInfoLog(s, sizeof log, nullptr, log);
+    gl.DeleteShader(s);
+    throw std::runtime_error(std::string("glsl: a generated shader does not compile: ") + log + "\n" + src);
+  }
+  return s;
+}
+
+// Mesa's draw module looks for vertices outside the view volume among those the draw uses.
+bool any_outside(const state::SinkState& s, const state::SinkVertex* v, size_t count, const uint32_t* idx, size_t n) {
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = idx ? idx[k] : k;
+    if (i < count && raster::outside_planes(glm::dvec4(s.mvp * v[i].position)) != 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Renderer::Renderer(const CoreGl& gl) : gl_(gl) {
+  static_assert(sizeof(state::SinkVertex) == 11 * sizeof(float), "SinkVertex is streamed as 11 floats");
+  gl_.GenVertexArrays(1, &vao_);
+  gl_.BindVertexArray(vao_);
+  GLuint b[3];
+  gl_.GenBuffers(3, b);
+  vbo_ = b[0], ebo_ = b[1], tfb_ = b[2];
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_);
+  gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+  const GLsizei stride = sizeof(state::SinkVertex);
+  gl_.VertexAttribPointer(kPosition, 4, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(state::SinkVertex, position)));
+  gl_.VertexAttribPointer(kNormal, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(state::SinkVertex, normal)));
+  gl_.VertexAttribPointer(kColor, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(state::SinkVertex, color)));
+  for (GLuint a : {kPosition, kNormal, kColor}) gl_.EnableVertexAttribArray(a);
+  // A new buffer's contents are undefined in GL; llvmpipe's start at 0, and soft's too: cleared
+  // here so that a program drawing without glClear sees the same on every backend.
+  gl_.ClearColor(0, 0, 0, 0);
+  gl_.ClearDepth(0);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+Renderer::~Renderer() {
+  for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
+  const GLuint b[3] = {vbo_, ebo_, tfb_};
+  gl_.DeleteBuffers(3, b);
+  gl_.DeleteVertexArrays(1, &vao_);
+}
+
+std::vector<const ProgramInfo*> Renderer::programs() const {
+  std::vector<const Program*> ps;
+  for (const auto& [k, p] : programs_) ps.push_back(&p);
+  std::sort(ps.begin(), ps.end(), [](const Program* a, const Program* b) { return a->order < b->order; });
+  std::vector<const ProgramInfo*> out;
+  for (const Program* p : ps) out.push_back(&p->info);
+  return out;
+}
+
+Renderer::Program& Renderer::program_for(const ProgramKey& k) {
+  const uint64_t id = k.packed();
+  if (auto it = programs_.find(id); it != programs_.end()) {
+    ++stats_.cache_hits;
+    return it->second;
+  }
+  ++stats_.compiles;
+  Program p;
+  p.order = programs_.size();
+  p.info.key = k;
+  p.info.sources = generate(k);
+  p.info.uniforms = uniforms(k, nullptr);
+  const GLuint vs = compile(gl_, GL_VERTEX_SHADER, p.info.sources.vertex);
+  const GLuint fs = compile(gl_, GL_FRAGMENT_SHADER, p.info.sources.fragment);
+  p.id = gl_.CreateProgram();
+  gl_.AttachShader(p.id, vs);
+  gl_.AttachShader(p.id, fs);
+  std::vector<const char*> names;
+  for (const std::string& n : p.info.sources.feedback) names.push_back(n.c_str());
+  gl_.TransformFeedbackVaryings(p.id, GLsizei(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
+  gl_.LinkProgram(p.id);
+  gl_.DeleteShader(vs);
+  gl_.DeleteShader(fs);
+  GLint ok = 0;
+  gl_.GetProgramiv(p.id, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    gl_.GetProgramInfoLog(p.id, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("glsl: a generated program does not link: ") + log);
+  }
+  for (const Uniform& u : p.info.uniforms) p.locations.push_back(gl_.GetUniformLocation(p.id, u.name.c_str()));
+  p.uploaded.assign(p.info.uniforms.size(), false);
+  return programs_.emplace(id, std::move(p)).first->second;
+}
+
+// Each uniform is sent when its value differs from the one the program holds.
+void Renderer::upload(Program& p, const state::SinkState& s) {
+  const std::vector<Uniform> now = uniforms(p.info.key, &s);
+  for (size_t i = 0; i < now.size(); ++i) {
+    Uniform& held = p.info.uniforms[i];
+    if (p.uploaded[i] && std::memcmp(held.value.data(), now[i].value.data(), sizeof(float) * size_t(now[i].size)) == 0)
+      continue;
+    held.value = now[i].value;
+    p.uploaded[i] = true;
+    ++stats_.uniform_uploads;
+    const GLint at = p.locations[i];
+    const float* v = held.value.data();
+    switch (held.size) {
+      case 1: gl_.Uniform1fv(at, 1, v); break;
+      case 3: gl_.Uniform3fv(at, 1, v); break;
+      case 4: gl_.Uniform4fv(at, 1, v); break;
+      case 9: gl_.UniformMatrix3fv(at, 1, GL_FALSE, v); break;
+      default: gl_.UniformMatrix4fv(at, 1, GL_FALSE, v); break;
+    }
+  }
+}
+
+void Renderer::apply_fragment(const state::SinkState& s) {
+  const state::FragmentState& f = *s.fragment;
+  gl_.ColorMask(f.color_mask[0], f.color_mask[1], f.color_mask[2], f.color_mask[3]);
+  gl_.DepthMask(f.depth_mask);
+  if (f.scissor_test) {
+    gl_.Enable(GL_SCISSOR_TEST);
+    const glm::ivec4 b = f.scissor_box;
+    if (b.z >= 0) gl_.Scissor(b.x, b.y, b.z, b.w);
+    else gl_.Disable(GL_SCISSOR_TEST);  // never set: the whole window
+  } else {
+    gl_.Disable(GL_SCISSOR_TEST);
+  }
+}
+
+void Renderer::apply(const state::SinkState& s) {
+  for (const std::string& what : s.unsupported)
+    if (unsupported_.insert(what).second)
+      std::fprintf(stderr, "ffcompat: the GLSL backend does not draw %s; drawn without it\n", what.c_str());
+  gl_.Viewport(s.viewport.x, s.viewport.y, s.viewport.z, s.viewport.w);
+  gl_.DepthRange(s.depth_range.x, s.depth_range.y);
+  s.depth_test ? gl_.Enable(GL_DEPTH_TEST) : gl_.Disable(GL_DEPTH_TEST);
+  gl_.DepthFunc(s.depth_func);
+  s.cull ? gl_.Enable(GL_CULL_FACE) : gl_.Disable(GL_CULL_FACE);
+  gl_.CullFace(s.cull_mode);
+  gl_.FrontFace(s.front_face);
+  gl_.PointSize(s.point_size);
+  gl_.LineWidth(s.line_width);
+  apply_fragment(s);
+  const state::FragmentState& f = *s.fragment;
+  if (f.blend) {
+    gl_.Enable(GL_BLEND);
+    gl_.BlendFuncSeparate(f.src_rgb, f.dst_rgb, f.src_alpha, f.dst_alpha);
+    gl_.BlendEquationSeparate(f.eq_rgb, f.eq_alpha);
+    gl_.BlendColor(f.blend_color.r, f.blend_color.g, f.blend_color.b, f.blend_color.a);
+  } else {
+    gl_.Disable(GL_BLEND);
+  }
+}
+
+void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVertex* v, size_t count,
+                    const uint32_t* indices, size_t index_count) {
+  const size_t n = indices ? index_count : count;
+  SplitRule rule;
+  rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_;
+  if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
+  const GLenum list_mode = decompose(mode, indices, n, rule, list_);
+  if (list_.empty()) return;
+  ++stats_.draws;
+  Program& p = program_for(ProgramKey::of(s, phong_));
+  ++p.info.draws;
+  gl_.UseProgram(p.id);
+  upload(p, s);
+  apply(s);
+  // Orphaned each draw: the driver gives fresh storage while earlier draws still read the old.
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_);
+  gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(state::SinkVertex)), v, GL_STREAM_DRAW);
+  gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(list_.size() * sizeof(uint32_t)), list_.data(), GL_STREAM_DRAW);
+  if (capture_) return capture_draw(s, list_mode, p, list_.size());
+  gl_.DrawElements(list_mode, GLsizei(list_.size()), GL_UNSIGNED_INT, nullptr);
+}
+
+// Transform feedback writes each listed vertex's gl_Position and colours, in list order.
+void Renderer::capture_draw(const state::SinkState& s, GLenum list_mode, const Program& p, size_t n) {
+  const size_t floats = 4 * p.info.sources.feedback.size();
+  gl_.BindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, tfb_);
+  gl_.BufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(n * floats * sizeof(float)), nullptr, GL_STREAM_READ);
+  gl_.BindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, tfb_);
+  gl_.BeginTransformFeedback(list_mode);
+  gl_.DrawElements(list_mode, GLsizei(n), GL_UNSIGNED_INT, nullptr);
+  gl_.EndTransformFeedback();
+  std::vector<float> out(n * floats);
+  gl_.GetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(out.size() * sizeof(float)), out.data());
+  CapturedDraw d;
+  d.mode = list_mode, d.flat = s.flat, d.cull = s.cull, d.cull_mode = s.cull_mode, d.front_face = s.front_face;
+  d.viewport = s.viewport, d.depth_range = s.depth_range;
+  for (size_t i = 0; i < n; ++i) {
+    const float* r = &out[i * floats];
+    CapturedVertex cv;
+    std::memcpy(&cv.clip, r, 4 * sizeof(float));
+    std::memcpy(&cv.front, r + 4, 4 * sizeof(float));
+    cv.back = cv.front;
+    if (floats >= 12) std::memcpy(&cv.back, r + 8, 4 * sizeof(float));
+    d.vertices.push_back(cv);
+  }
+  captured_.push_back(std::move(d));
+}
+
+void Renderer::clear(const state::SinkState& s, GLbitfield mask) {
+  apply_fragment(s);
+  gl_.ClearColor(s.clear_color.r, s.clear_color.g, s.clear_color.b, s.clear_color.a);
+  gl_.ClearDepth(s.clear_depth);
+  gl_.Clear(mask & (GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT));
+}
+
+void Renderer::read_back(uint8_t* rgba, int width, int height) {
+  std::vector<uint8_t> rows(size_t(width) * size_t(height) * 4);
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  const size_t row = size_t(width) * 4;
+  for (int y = 0; y < height; ++y)  // GL's bottom row first, to the top row first
+    std::memcpy(rgba + size_t(y) * row, rows.data() + size_t(height - 1 - y) * row, row);
+}
+
+}  // namespace ffc::glsl

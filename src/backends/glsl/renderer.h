@@ -1,0 +1,85 @@
+// The GLSL backend's draw sink: what our state tracker assembles, drawn through a core-profile
+// context with the program generated for the state's key (cached by key), the uniforms uploaded
+// when their values change, the vertices streamed into one buffer (orphaned each draw). It can
+// also record what the vertex shader computes (transform feedback), for `ffcompat check`.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "backends/glsl/gl_core.h"
+#include "backends/glsl/shader_gen.h"
+#include "state/draw_sink.h"
+
+namespace ffc::glsl {
+
+struct CapturedVertex {
+  glm::vec4 clip;
+  glm::vec4 front, back;  // back = front without two-sided lighting
+};
+
+// One draw as transform feedback recorded it: points, lines or triangles (provoking vertex last).
+struct CapturedDraw {
+  GLenum mode = GL_TRIANGLES;
+  bool flat = false, cull = false;
+  GLenum cull_mode = GL_BACK, front_face = GL_CCW;
+  glm::ivec4 viewport{0};
+  glm::dvec2 depth_range{0, 1};
+  std::vector<CapturedVertex> vertices;
+};
+
+struct Stats {
+  uint64_t draws = 0, compiles = 0, cache_hits = 0, uniform_uploads = 0;
+};
+
+// A program as the cache holds it: the key, the sources and the uniforms' last values.
+struct ProgramInfo {
+  ProgramKey key;
+  Sources sources;
+  std::vector<Uniform> uniforms;
+  uint64_t draws = 0;
+};
+
+class Renderer final : public state::DrawSink {
+ public:
+  explicit Renderer(const CoreGl& gl);  // the context current, the functions loaded
+  ~Renderer() override;
+  void draw(const state::SinkState& s, GLenum mode, const state::SinkVertex* vertices, size_t count,
+            const uint32_t* indices, size_t index_count) override;
+  void clear(const state::SinkState& s, GLbitfield mask) override;
+  void read_back(uint8_t* rgba, int width, int height) override;
+
+  void set_capture(bool on) { capture_ = on; }
+  void set_phong(bool on) { phong_ = on; }  // lit smooth draws lit per fragment
+  const std::vector<CapturedDraw>& captured() const { return captured_; }
+  const Stats& stats() const { return stats_; }
+  std::vector<const ProgramInfo*> programs() const;  // in the order they were made
+  const std::set<std::string>& unsupported() const { return unsupported_; }
+
+ private:
+  struct Program {
+    GLuint id = 0;
+    std::vector<GLint> locations;  // per uniform of info.uniforms
+    std::vector<bool> uploaded;
+    ProgramInfo info;
+    size_t order = 0;
+  };
+  Program& program_for(const ProgramKey& k);
+  void upload(Program& p, const state::SinkState& s);
+  void apply(const state::SinkState& s);
+  void apply_fragment(const state::SinkState& s);
+  void capture_draw(const state::SinkState& s, GLenum list_mode, const Program& p, size_t index_count);
+
+  const CoreGl& gl_;
+  GLuint vao_ = 0, vbo_ = 0, ebo_ = 0, tfb_ = 0;
+  std::map<uint64_t, Program> programs_;
+  std::vector<uint32_t> list_;
+  bool capture_ = false, phong_ = false;
+  std::vector<CapturedDraw> captured_;
+  Stats stats_;
+  std::set<std::string> unsupported_;
+};
+
+}  // namespace ffc::glsl

@@ -1,0 +1,67 @@
+// A draw sink: something other than the vertex stage and the rasterizer that draws what our
+// context assembles (the GLSL backend hands it to a core-profile GL through shaders). When a sink
+// is set and the render mode is GL_RENDER, glDrawArrays, glDrawElements, glEnd and glClear give it
+// the primitive mode, the object-space attributes of each vertex as GL fetched them (arrays or
+// current values) and the indices; feedback and selection still take soft's path. The sink reads
+// the rest of the state (matrices, lights, materials, the lighting key, culling, depth) from
+// SinkState, a snapshot taken at the draw.
+#pragma once
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "lighting/lighting.h"
+#include "state/fragment.h"
+
+namespace ffc::state {
+
+// One vertex as the sink's buffers hold it (the layout the GLSL backend streams: 11 floats).
+struct SinkVertex {
+  glm::vec4 position;
+  glm::vec3 normal;
+  glm::vec4 color;
+};
+
+struct SinkState {
+  bool lighting = false;
+  lighting::Key key;  // Key{} when lighting is off
+  const lighting::LightParams* lights = nullptr;        // [8], positions and directions in eye space
+  const lighting::MaterialParams* materials = nullptr;  // [2], front and back, colour material tracked
+  lighting::ModelParams model;  // color_material: the colour comes per vertex (the key's bit)
+  glm::mat4 modelview{1}, mvp{1};  // in float, as Mesa computes them
+  glm::dmat3 normal_inverse{1};    // M^-1 of the modelview's upper 3x3: eye normal = n * M^-1
+  double rescale = 0;              // GL_RESCALE_NORMAL's divisor; 0: none
+  bool flat = false;
+  bool cull = false;
+  GLenum cull_mode = GL_BACK, front_face = GL_CCW;
+  bool depth_test = false;
+  GLenum depth_func = GL_LESS;
+  glm::ivec4 viewport{0};
+  glm::dvec2 depth_range{0, 1};
+  float point_size = 1, line_width = 1;
+  const FragmentState* fragment = nullptr;  // scissor, blending, masks, alpha test, stipple
+  glm::vec4 clear_color{0};
+  double clear_depth = 1;
+  // Enabled state that changes pictures and that the sink is not given (fog, polygon offset and
+  // modes, ...): one line each, for the sink to report.
+  std::vector<std::string> unsupported;
+};
+
+class DrawSink {
+ public:
+  virtual ~DrawSink() = default;
+  // mode: a GL primitive (GL_POINTS .. GL_POLYGON); indices into `vertices` (null: 0 .. count - 1).
+  virtual void draw(const SinkState& s, GLenum mode, const SinkVertex* vertices, size_t count,
+                    const uint32_t* indices, size_t index_count) = 0;
+  // glClear's mask (colour and depth; the others have no buffer here).
+  virtual void clear(const SinkState& s, GLbitfield mask) = 0;
+  // glReadPixels reads soft's framebuffer: the sink copies its colour buffer there first (RGBA8,
+  // top row first, as raster::Framebuffer keeps it). glDrawPixels and glBitmap are refused
+  // (GL_INVALID_OPERATION and one line naming them) while a sink draws.
+  virtual void read_back(uint8_t* rgba, int width, int height) = 0;
+};
+
+}  // namespace ffc::state
