@@ -13,6 +13,7 @@ void add_stress(CLI::App& app);  // stress.cpp
 void add_fuzz(CLI::App& app);    // fuzz.cpp
 void add_run(CLI::App& app);     // run.cpp
 void add_calls(CLI::App& app);   // calls.cpp
+void add_seeds(CLI::App& app);   // seeds.cpp
 }
 
 // Exit codes, the same for every command (README, "The command line"):
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_fuzz(app);
   ffc::cli::add_run(app);
   ffc::cli::add_calls(app);
+  ffc::cli::add_seeds(app);
   // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
   std::string commands;
   bool known = false;
