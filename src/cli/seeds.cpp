@@ -85,6 +85,45 @@ struct Camera {
   double angle_deg, height;
 };
 
+// Seed 001's averaged-normal steps (5 Gouraud, 6 Phong) with and without GL's N.L test, from the
+// camera where the sweep found the test matters most: pictures, heat maps and a sheet.
+nlohmann::ordered_json guard_pictures(seed001::Headless& glsl, const seed001::GuardSweep& g, const std::string& dir) {
+  namespace fs = std::filesystem;
+  seed001::View v;
+  v.fovy_radians = false;
+  v.cam_ang = g.cam_angle_deg * M_PI / 180, v.cam_height = g.cam_height;
+  nlohmann::ordered_json j = nlohmann::json::array();
+  std::vector<image::Image> keep;
+  keep.reserve(6);
+  image::Sheet sheet;
+  sheet.title = "seed 001, averaged normals, camera " + std::to_string(int(g.cam_angle_deg)) + " deg, height " +
+                std::to_string(g.cam_height).substr(0, 4) + ": without and with GL's N.L test on the specular";
+  sheet.columns = {"as the handout", "with the N.L test", "difference"};
+  sheet.heat_legend = true;
+  for (const int step : {5, 6}) {
+    seed001::Lighting l = seed001::step_lighting(step);
+    keep.push_back(glsl.render(l, v));
+    l.nl_guard = true;
+    keep.push_back(glsl.render(l, v));
+    const image::Image& a = keep[keep.size() - 2];
+    const image::Image& b = keep.back();
+    keep.push_back(image::heat_map(a, b));
+    const std::string name = "guard_step" + std::to_string(step);
+    image::write_png((fs::path(dir) / (name + ".png")).string(), a);
+    image::write_png((fs::path(dir) / (name + "_nl_test.png")).string(), b);
+    image::write_png((fs::path(dir) / (name + "_diff.png")).string(), keep.back());
+    nlohmann::ordered_json row = {{"step", step}, {"file", (fs::path(dir) / (name + ".png")).string()},
+                                  {"specular_peak", {highlight(a).peak, highlight(b).peak}},
+                                  {"highlight_pixels", {highlight(a).pixels, highlight(b).pixels}}};
+    row.update(to_json(image::compare(a, b)));
+    j.push_back(row);
+    sheet.rows.push_back(step == 5 ? "step 5 Gouraud" : "step 6 Phong");
+    sheet.cells.push_back({&a, &b, &keep.back()});
+  }
+  image::write_png((fs::path(dir) / "guard.png").string(), image::labelled_grid(sheet));
+  return j;
+}
+
 }  // namespace
 #endif
 
@@ -154,7 +193,11 @@ void add_seeds(CLI::App& app) {
     for (const Camera& c : cameras) {
       nlohmann::ordered_json cj = {{"label", c.label}, {"cam_angle_deg", c.angle_deg}, {"cam_height", c.height},
                                    {"pictures", nlohmann::json::array()}, {"differences", nlohmann::json::array()}};
-      if (!*json) std::printf("-- camera %g deg, height %g (%s)\n", c.angle_deg, c.height, c.label.c_str());
+      if (!*json) {
+        std::string label = c.label;
+        std::replace(label.begin(), label.end(), '\n', ' ');
+        std::printf("-- camera %g deg, height %g (%s)\n", c.angle_deg, c.height, label.c_str());
+      }
       for (const Link& link : kChain) {
         const std::string key = c.prefix + link.name, path = (fs::path(*out) / (key + ".png")).string();
         image::write_png(path, pics[key]);
@@ -206,6 +249,16 @@ void add_seeds(CLI::App& app) {
                     step == 3 ? "face" : "averaged", g.cameras, g.max_steps, g.cam_angle_deg, g.cam_height, g.point.x,
                     g.point.y, g.point.z, g.cameras_affected);
     }
+    const seed001::GuardSweep worst = seed001::sweep_nl_guard(seed001::step_lighting(5));
+    guard["averaged_normals"]["pictures"] = guard_pictures(glsl, worst, *out);
+    guard["sheet"] = (fs::path(*out) / "guard.png").string();
+    if (!*json)
+      for (const auto& row : guard["averaged_normals"]["pictures"])
+        std::printf("  step %d from there, without -> with the N.L test: max %d steps on %.2f%% of the pixels, "
+                    "highlight %d -> %d pixels (%s)\n",
+                    row["step"].get<int>(), row["max_diff"].get<int>(), 100 * row["differing_share"].get<double>(),
+                    row["highlight_pixels"][0].get<int>(), row["highlight_pixels"][1].get<int>(),
+                    guard["sheet"].get<std::string>().c_str());
     j["nl_guard_sweep"] = guard;
 
     // Sheets: the three pictures and their differences per camera; the chain for each camera.
