@@ -141,20 +141,6 @@ ReferenceCheck check_against_reference(const ffc::image::Image& img, const Light
   return r;
 }
 
-bool interior(const Lighting& l, const View& v, int x, int y) {
-  int face = -2;
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      glm::dvec3 w;
-      Corner c[3];
-      const int t = hit_triangle(l, v, x + dx + 0.5, y + dy + 0.5, w, c);
-      if (t < 0) return false;
-      if (face == -2) face = t / 2;
-      if (t / 2 != face) return false;
-    }
-  return true;
-}
-
 GuardSweep sweep_nl_guard(const Lighting& l0) {
   Lighting l = l0;
   l.terms = 3, l.nl_guard = false;

@@ -24,10 +24,6 @@ struct PixelRef {
 // Pixel (x, y) of the picture, top row first, at the view's size.
 PixelRef reference_pixel(const Lighting& l, const View& v, int x, int y);
 
-// Whether the pixel and its eight neighbours all show the same face: away from the silhouette and
-// the cube's edges, where a pixel centre's side of an edge decides its colour.
-bool interior(const Lighting& l, const View& v, int x, int y);
-
 // A picture held to the reference: every pixel whose 3x3 neighbourhood shows one face (the
 // colour, max over RGB of |picture - round(255 * reference)|) and every pixel whose neighbourhood
 // shows only background (black).

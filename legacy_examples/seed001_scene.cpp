@@ -101,10 +101,17 @@ const std::vector<Vertex>& averaged_normal_vertices() {
 
 namespace {
 
+// A GLSL float literal: "32.0", not "32", which some compilers would take for an int.
+std::string float_text(double x) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%.9g", x);
+  std::string s = b;
+  if (s.find_first_of(".en") == std::string::npos) s += ".0";
+  return s;
+}
+
 std::string vec3_text(const glm::dvec3& v) {
-  char b[128];
-  std::snprintf(b, sizeof b, "vec3(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
-  return b;
+  return "vec3(" + float_text(v.x) + ", " + float_text(v.y) + ", " + float_text(v.z) + ")";
 }
 
 // The handout's lighting code, once, for the vertex shader (Gouraud) or the fragment shader
@@ -218,12 +225,11 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 }  // namespace
 
 ShaderText shaders(const Lighting& l, const glm::dvec3& light_pos, const glm::dvec3& view_axis) {
-  char scalars[256];
-  std::snprintf(scalars, sizeof scalars,
-                "#define TERMS %d\n#define PER_FRAGMENT %d\n#define SHININESS %.9g\n#define LIGHT_AMBIENT %.9g\n"
-                "#define GLOBAL_AMBIENT %.9g\n",
-                l.terms, int(l.per_fragment), l.shininess, l.light_ambient, l.global_ambient);
-  std::string prelude = std::string("#version 330 core\n") + scalars;
+  std::string prelude = "#version 330 core\n#define TERMS " + std::to_string(l.terms) + "\n";
+  prelude += "#define PER_FRAGMENT " + std::to_string(int(l.per_fragment)) + "\n";
+  prelude += "#define SHININESS " + float_text(l.shininess) + "\n";
+  prelude += "#define LIGHT_AMBIENT " + float_text(l.light_ambient) + "\n";
+  prelude += "#define GLOBAL_AMBIENT " + float_text(l.global_ambient) + "\n";
   prelude += "#define HALF_VECTOR " + std::to_string(int(l.half_vector)) + "\n";
   prelude += "#define NL_GUARD " + std::to_string(int(l.nl_guard)) + "\n";
   prelude += "#define INFINITE_VIEWER " + std::to_string(int(l.infinite_viewer)) + "\n";

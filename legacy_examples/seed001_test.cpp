@@ -193,6 +193,29 @@ TEST_F(Seed001Picture, GouraudFaceCentreIsTheDiagonalsMidpointColour) {
   EXPECT_NEAR(img.at(bx, by)[0], expected, 1.0);
 }
 
+TEST_F(Seed001Picture, GouraudNearAVertexIsThatVertexsColour) {
+  // Step 3 at the front face's corner v1 = (1,1,1): 0.1 + 3/sqrt(14) + pow(14/sqrt(238), 32) red,
+  // the specular alone in green and blue. The front-face pixel whose centre lies nearest v1 is
+  // within a couple of pixels of it, where the interpolated colour has moved by under 2 steps.
+  const View v = view();
+  const Lighting l = step_lighting(3);
+  const double spec = std::pow(14 / std::sqrt(238.0), 32), red = 0.1 + 3 / std::sqrt(14.0) + spec;
+  const ffc::image::Image img = gl_->render(l, v);
+  int bx = -1, by = -1;
+  double best = 1e9;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const PixelRef r = reference_pixel(l, v, x, y);
+      if (r.face == 0 && glm::length(r.point - glm::dvec3(1, 1, 1)) < best) best = glm::length(r.point - glm::dvec3(1, 1, 1)), bx = x, by = y;
+    }
+  ASSERT_GE(bx, 0);
+  EXPECT_LT(best, 0.05);
+  EXPECT_NEAR(img.at(bx, by)[0], 255 * red, 2.0);
+  EXPECT_NEAR(img.at(bx, by)[1], 255 * spec, 2.0);
+  // And the pixel is what the reference interpolates for its centre, to a step.
+  EXPECT_NEAR(img.at(bx, by)[0], 255 * reference_pixel(l, v, bx, by).colour.r, 1.0);
+}
+
 TEST_F(Seed001Picture, PhongShowsTheHighlightGouraudLoses) {
   // From 30 degrees left and 0.5 down (keys 1 1 1, W x 15), the mirror image of the light in the
   // front face's plane is seen at (0.39, 0.81, 1), inside the face: there V = R and the specular is
