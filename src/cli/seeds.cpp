@@ -138,9 +138,9 @@ void add_seeds(CLI::App& app) {
   cmd->add_option("--out", *out, "Directory for the pictures, heat maps and sheets")->required();
   cmd->add_flag("--json", *json, "Print the pictures' figures and the differences as JSON");
   cmd->add_option("--size", *size, "Picture size (square)")->check(CLI::Range(16, 2048))->capture_default_str();
-  auto* angle_opt = cmd->add_option("--cam-angle", *angle, "Camera angle around y in degrees (the seeds' keys 1/3)")
+  [[maybe_unused]] auto* angle_opt = cmd->add_option("--cam-angle", *angle, "Camera angle around y in degrees (the seeds' keys 1/3)")
                         ->capture_default_str();
-  auto* height_opt = cmd->add_option("--cam-height", *height, "Camera height (the seeds' keys 2/W)")->capture_default_str();
+  [[maybe_unused]] auto* height_opt = cmd->add_option("--cam-height", *height, "Camera height (the seeds' keys 2/W)")->capture_default_str();
   cmd->callback([=] {
 #ifndef FFCOMPAT_WITH_SEED001
     throw std::runtime_error("seeds: built without EGL (FFCOMPAT_WITH_EGL=OFF): no core-profile context for seed 001");
