@@ -14,6 +14,7 @@ void add_fuzz(CLI::App& app);    // fuzz.cpp
 void add_run(CLI::App& app);     // run.cpp
 void add_calls(CLI::App& app);   // calls.cpp
 void add_glsl(CLI::App& app);    // glsl.cpp
+void add_seeds(CLI::App& app);   // seeds.cpp
 }
 
 // Exit codes, the same for every command (README, "The command line"):
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   ffc::cli::add_run(app);
   ffc::cli::add_calls(app);
   ffc::cli::add_glsl(app);
+  ffc::cli::add_seeds(app);
   ffc::cli::add_platform_options(app);  // after the commands: it adds --platform to those that draw on Mesa
   // A missing or mistyped command: CLI11 says only "A subcommand is required"; name the real ones.
   std::string commands;
