@@ -41,13 +41,16 @@ void add_bench(CLI::App& app) {
     const scene::Description d = opts->description();
     const std::function<void()> issue = scene::frame(d);  // meshes built once, outside the timing
     std::vector<std::string> names;
+    const std::vector<std::string> known = backends::names();
+    std::string choices;
+    for (const std::string& k : known) choices += (choices.empty() ? "" : ", ") + k;
     std::stringstream list(*backends_list);
     for (std::string n; std::getline(list, n, ',');) {
-      if (std::find(kBackendNames.begin(), kBackendNames.end(), n) == kBackendNames.end())
-        throw std::invalid_argument("--backends: unknown backend '" + n + "' (mesa, soft, soft-double)");
+      if (std::find(known.begin(), known.end(), n) == known.end())
+        throw std::invalid_argument("--backends: unknown backend '" + n + "' (" + choices + ")");
       names.push_back(n);
     }
-    if (names.empty()) throw std::invalid_argument("--backends: no backend named (mesa, soft, soft-double)");
+    if (names.empty()) throw std::invalid_argument("--backends: no backend named (" + choices + ")");
     nlohmann::json medians = nlohmann::json::object(), all = nlohmann::json::object(), alloc_json = nlohmann::json::object();
     std::vector<std::unique_ptr<backends::Backend>> backends;
     for (const std::string& name : names) {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "backends/backend.h"
 #include "mesh/icosphere.h"
 #include "platform/platform_choice.h"
 #ifdef FFCOMPAT_WITH_MESA
@@ -105,8 +106,10 @@ void SceneOptions::add_to(CLI::App* app, bool with_shade_and_normals, bool with_
   cam_height_option = app->add_option("--cam-height", cam_height, "Cube camera height (built-in cube only)")->capture_default_str();
   if (with_backend)
     app->add_option("--backend", backend,
-                    "Renderer: mesa (Mesa's fixed-function pipeline, OSMesa or EGL: --platform), soft (ours, float) or soft-double (ours, double)")
-        ->check(CLI::IsMember(kBackendNames))
+                    "Renderer: mesa (Mesa's fixed-function pipeline, OSMesa or EGL: --platform), soft (ours, float), "
+                    "soft-double (ours, double), glsl (our state drawn by generated GLSL on a core-profile context), "
+                    "glsl-phong (the same, lit per fragment)")
+        ->check(CLI::IsMember(backends::names()))
         ->capture_default_str();
 }
 

@@ -1,7 +1,5 @@
 #include "backends/glsl/glsl_backend.h"
 
-#include <EGL/egl.h>
-
 #include <stdexcept>
 
 #include "gl/dispatch.h"
@@ -13,8 +11,7 @@ namespace ffc::backends {
 // this thread, EGL still counts its own as current and would not bind it again, and our calls
 // would reach OSMesa's context. Releasing EGL's first makes the binding real.
 void GlslBackend::bind() {
-  if (const EGLDisplay d = eglGetCurrentDisplay(); d != EGL_NO_DISPLAY)
-    eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  platform::EglContext::release();
   egl_->make_current();
 }
 
