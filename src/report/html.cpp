@@ -225,6 +225,30 @@ std::string html_page(const Report& r) {
     s << "</tr>\n";
   }
   s << "</table>\n";
+  // Flat, Gouraud and Phong side by side: GL_FLAT and GL_SMOOTH (averaged normals) on Mesa, and the
+  // same equation per fragment from interpolated normals (glsl-phong), error against time.
+  if (std::find(backends.begin(), backends.end(), "glsl-phong") != backends.end()) {
+    s << "<h2 id=\"three\">Flat, Gouraud and Phong shading</h2>\n<p>GL_FLAT (face normals) and GL_SMOOTH (Gouraud, "
+         "averaged normals) on Mesa, and Phong shading: the same GL lighting equation evaluated per fragment from "
+         "interpolated eye-space normals and positions (backend <b>glsl-phong</b>, averaged normals). RMSE in 8-bit "
+         "steps against the ideal sphere, and the median milliseconds per frame.</p>\n";
+    for (const auto& sc : scenes) {
+      s << "<h3>Lighting " << xml_escape(sc) << "</h3>\n<table><tr><th>depth</th><th>triangles</th>"
+        << "<th>flat rmse</th><th>flat ms</th><th>Gouraud rmse</th><th>Gouraud ms</th><th>Phong rmse</th><th>Phong ms</th></tr>\n";
+      for (int d : depths) {
+        const Row* fl = find(rows, sc, d, "flat", "mesa");
+        const Row* go = find(rows, sc, d, "smooth-average", "mesa");
+        const Row* ph = find(rows, sc, d, "smooth-average", "glsl-phong");
+        if (!fl && !go && !ph) continue;
+        const Row* any = fl ? fl : go ? go : ph;
+        s << "<tr><td>" << d << "</td><td>" << any->triangles << "</td>";
+        for (const Row* x : {fl, go, ph})
+          s << "<td>" << (x ? f("%.3f", x->rmse) : "") << "</td><td>" << (x ? f("%.2f", x->ms_per_frame) : "") << "</td>";
+        s << "</tr>\n";
+      }
+      s << "</table>\n";
+    }
+  }
   s << "<h3>Milliseconds to compute the normals (median), by weighting</h3>\n<table><tr><th>depth</th><th>vertices</th>";
   for (const auto& sh : shadings) s << "<th>" << xml_escape(sh == "flat" ? "face (flat)" : sh.substr(sh.find('-') + 1)) << "</th>";
   s << "</tr>\n";

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "backends/backend.h"
 #include "image/compare.h"
 #include "report/ideal.h"
 #include "report/metrics.h"
@@ -67,6 +68,10 @@ std::string regression_path(size_t index, const std::string& name, const std::st
 ReportOptions default_options(bool quick) {
   ReportOptions o;
   o.quick = quick;
+  // Phong shading (the GL equation per fragment, the GLSL backend's glsl-phong) beside flat and
+  // Gouraud, where this program has that backend (EGL).
+  const std::vector<std::string> known = backends::names();
+  if (std::find(known.begin(), known.end(), "glsl-phong") != known.end()) o.sweep.backends.push_back("glsl-phong");
   if (quick) {
     o.sweep.min_depth = 0, o.sweep.max_depth = 4;
     o.sweep.backends = {"mesa", "soft"};

@@ -23,7 +23,8 @@ struct ReportOptions {
   std::string scenes_dir;  // empty: find_scenes_dir()
 };
 
-// The full sweep: depths 0..8, both lighting setups, every shading, mesa, soft and soft-double,
+// The full sweep: depths 0..8, both lighting setups, every shading, mesa, soft and soft-double (and
+// glsl-phong, per fragment, for the smooth shadings, where the program has it),
 // 512x512, 5 timed frames (3 from depth 7; fast pictures more, up to 25, until 60 ms are timed),
 // pictures kept at depths 1, 3, 5. Quick: depths 0..4,
 // mesa and soft, 256x256, one timed frame, pictures at depths 1 and 3.
