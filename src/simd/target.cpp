@@ -74,16 +74,16 @@ std::string current() {
 }
 
 bool restrict(const std::string& name) {
-  if (name.empty()) return apply(0), true;
-  int64_t bit = target_bit(name);
+  static int64_t restricted = 0;  // the bit in force (0: none), kept when a request is refused
+  int64_t bit = name.empty() ? 0 : target_bit(name);
   if (name == "scalar") bit = HWY_TARGETS & kPortable & -(HWY_TARGETS & kPortable);
-  if (!bit || !(hwy::SupportedTargets() & HWY_TARGETS & bit)) {
-    // Not available now; with an earlier restriction lifted it may be.
+  if (!name.empty()) {
+    // Whether the CPU runs it and the build has it, with any earlier restriction lifted to ask.
     hwy::SetSupportedTargetsForTest(0);
     const bool there = bit && (hwy::SupportedTargets() & HWY_TARGETS & bit);
-    if (!there) return false;
+    if (!there) return apply(restricted), false;
   }
-  apply(bit);
+  apply(restricted = bit);
   return true;
 }
 

@@ -35,9 +35,9 @@ void Context::feedback_offset(const raster::WindowVertex* const* v, const raster
 void Context::feedback_primitive(GLenum kind, const raster::WindowVertex* w, size_t count, bool clipped,
                                  const raster::State& rs, bool offset_stage) {
   auto one = [&](std::initializer_list<const raster::WindowVertex*> vs) {
-    // Mesa's cull stage runs after its clipper, on each triangle it passes on: one of zero area in
-    // window space (its float determinant 0) is a back face there (window_culled).
-    if (kind == GL_POLYGON_TOKEN && rs.cull && zero_area(vs.begin()) && window_culled(0, rs)) return;
+    // Mesa's cull stage runs after its clipper, on each triangle it passes on, by the float window
+    // determinant (window_culled: one of zero area is a back face there).
+    if (kind == GL_POLYGON_TOKEN && window_culled(window_det(vs.begin()), rs)) return;
     float z[3] = {};
     if (kind == GL_POLYGON_TOKEN && offset_stage) feedback_offset(vs.begin(), rs, z);
     // A hit: its window depths, as feedback would report them; nothing goes to the feedback buffer.

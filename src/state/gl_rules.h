@@ -45,7 +45,6 @@ inline float window_det(const raster::WindowVertex* const* v) {
   const float fx = v[1]->fx - v[2]->fx, fy = v[1]->y_down - v[2]->y_down;
   return -(ex * fy - ey * fx);
 }
-inline bool zero_area(const raster::WindowVertex* const* v) { return window_det(v) == 0; }
 
 // Facing by that determinant. One of zero area is clockwise to the unfilled stage (the back face
 // under glFrontFace(GL_CCW), the front under GL_CW: measured), front-facing to the two-side stage

@@ -34,5 +34,12 @@ TEST(SimdTarget, UnknownNamesAreRefused) {
   EXPECT_NE(target_bit("avx2"), 0);
 }
 
+TEST(SimdTarget, ARefusedRequestKeepsTheRestrictionInForce) {
+  ASSERT_TRUE(restrict("scalar"));
+  EXPECT_FALSE(restrict("avx1024"));
+  EXPECT_EQ(current(), "scalar");
+  restrict("");
+}
+
 }  // namespace
 }  // namespace ffc::simd
