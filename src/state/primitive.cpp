@@ -36,6 +36,7 @@ class Assembly {
   void emit(std::initializer_list<size_t> idx, size_t provoking, GLenum kind, unsigned edges = 7, bool reset = true);
   void assemble(size_t n);
   void triangles_on_threads(size_t n);
+  void draw_held_triangles();
 
   Context& c_;
   const raster::State rs_;
@@ -71,11 +72,19 @@ void Assembly::run() {
   if (c_.prim_mode_ == GL_TRIANGLES && !feedback_ && !c_.unfilled() && c_.threads_ > 1 && n >= 3 * 4096)
     return triangles_on_threads(n);
   assemble(n);
+  draw_held_triangles();
+}
+
+// Filled triangles are held in Context::triangles_ and rasterized together; a line or point drawn
+// in between (a face glPolygonMode draws unfilled) draws those held first, so that each primitive
+// lands over the ones before it, in the order Mesa's pipeline hands them to its rasterizer
+// (measured: a strip's front face outlined over the back face filled before it).
+void Assembly::draw_held_triangles() {
+  if (c_.triangles_.empty()) return;
   const std::vector<raster::Triangle>* list = &c_.triangles_;
-  if (!c_.triangles_.empty()) {
-    c_.flush_clear();
-    raster::draw_triangles(c_.fb_, &list, 1, rs_, c_.workers());
-  }
+  c_.flush_clear();
+  raster::draw_triangles(c_.fb_, &list, 1, rs_, c_.workers());
+  c_.triangles_.clear();
 }
 
 // Smooth lines and points are drawn aliased: named when a drawn primitive meets them.
@@ -186,6 +195,7 @@ bool Assembly::clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, c
     c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
     return true;
   }
+  draw_held_triangles();
   c_.flush_clear();
   if (kind == GL_POINT_TOKEN) raster::draw_point(c_.fb_, w[0], rs_);
   else raster::draw_line(c_.fb_, w[0], w[1], rs_);
