@@ -8,6 +8,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include "backends/backend.h"
@@ -15,6 +16,9 @@
 #include "image/compare.h"
 #include "gl/dispatch.h"
 #include "image/image.h"
+#ifdef FFCOMPAT_WITH_GLSL
+#include "backends/glsl/vertex_compare.h"
+#endif
 
 #ifdef FFCOMPAT_EXAMPLES_WITH_GLFW
 #define GLFW_INCLUDE_NONE  // the GL names come from the dispatch
@@ -70,20 +74,63 @@ struct Options {
   int frames = 0, window_w = 0, window_h = 0;
 };
 
-// The example's frame through Mesa's feedback and ours, vertex by vertex (ffcompat check's
-// vertex level, for a program that is not a scene).
-int check_vertices(const Example& ex, const Options& opt) {
-  const check::VertexReport r = check::compare_vertices(ex.width, ex.height, [&] { ex.draw(ex.width, ex.height); });
-  // And the pictures: no pixel more than one 8-bit step apart.
+// The example's frame on Mesa and on `ours`, the picture: no pixel more than one 8-bit step apart.
+image::Diff compare_pictures(const Example& ex, const std::string& ours) {
   image::Image pictures[2];
-  const char* names[2] = {"mesa", "soft"};
+  const std::string names[2] = {"mesa", ours};
   for (int i = 0; i < 2; ++i) {
     auto backend = backends::make(names[i]);
     backend->begin(ex.width, ex.height);
     ex.draw(ex.width, ex.height);
     pictures[i] = backend->read();
   }
-  const image::Diff d = image::compare(pictures[0], pictures[1]);
+  return image::compare(pictures[0], pictures[1]);
+}
+
+// --check --backend glsl: the lit colours and positions the generated vertex shaders compute
+// (transform feedback) against Mesa's feedback, as `ffcompat check --backend glsl --level vertex`
+// does for a scene, then the pictures.
+int check_glsl(const Example& ex, const Options& opt) {
+#ifndef FFCOMPAT_WITH_GLSL
+  (void)opt;
+  std::cerr << ex.name << ": the GLSL backend is not built here (no EGL at configure time)\n";
+  return 1;
+#else
+  const glsl::VertexComparison r = glsl::compare_with_mesa(ex.width, ex.height, [&] { ex.draw(ex.width, ex.height); });
+  const image::Diff d = compare_pictures(ex, "glsl");
+  // Every primitive Mesa reports paired with one of ours (or holding a vertex the clipper made),
+  // at least one compared, every compared colour within 1e-5 (or a deviation of Mesa's named).
+  const bool vertices_ok = r.unpaired == 0 && r.compared > 0 && (r.max_abs <= 1e-5 || !r.known_mesa_deviations.empty());
+  const bool pass = vertices_ok && d.max_diff <= 1;
+  if (opt.json)
+    std::cout << nlohmann::ordered_json{{"example", ex.name},          {"backend", "glsl"},
+                                        {"mesa_primitives", r.mesa_primitives}, {"compared", r.compared},
+                                        {"clipped", r.clipped},         {"unpaired", r.unpaired},
+                                        {"vertices", r.vertices},       {"max_abs", r.max_abs},
+                                        {"rms", r.rms},                 {"max_position_px", r.max_position},
+                                        {"known_mesa_deviations", r.known_mesa_deviations},
+                                        {"programs", {{"compiles", r.compiles}, {"cache_hits", r.cache_hits}}},
+                                        {"pixel_max_diff", d.max_diff}, {"pixel_differing_share", d.differing_share},
+                                        {"pass", pass}}
+                     .dump()
+              << std::endl;
+  else
+    std::cout << ex.name << ": glsl " << r.compared << " of " << r.mesa_primitives << " primitives compared ("
+              << r.clipped << " clipped, " << r.unpaired << " unpaired), " << r.vertices << " vertices, colour vs Mesa max "
+              << r.max_abs << ", positions within " << r.max_position << " px; pixels max " << d.max_diff << " steps on "
+              << 100 * d.differing_share << "%" << (pass ? " PASS" : " FAIL") << std::endl;
+  return pass ? 0 : 2;
+#endif
+}
+
+// The example's frame through Mesa's feedback and ours, vertex by vertex (ffcompat check's
+// vertex level, for a program that is not a scene).
+int check_vertices(const Example& ex, const Options& opt) {
+  if (opt.backend == "glsl") return check_glsl(ex, opt);
+  if (opt.backend != "mesa" && opt.backend != "soft")
+    throw std::invalid_argument("--check compares soft (the default) or glsl with Mesa, not '" + opt.backend + "'");
+  const check::VertexReport r = check::compare_vertices(ex.width, ex.height, [&] { ex.draw(ex.width, ex.height); });
+  const image::Diff d = compare_pictures(ex, "soft");
   const bool pass = (r.max_abs <= 1e-5 || !r.known_mesa_deviations.empty()) && d.max_diff <= 1;
   if (opt.json)
     std::cout << nlohmann::ordered_json{{"example", ex.name}, {"vertices", r.vertices},      {"max_abs", r.max_abs},
@@ -226,7 +273,8 @@ int run_example(int argc, char** argv, const Example& ex) {
   Options opt;
   auto* headless = app.add_flag("--headless", opt.headless, "Render one frame offscreen and write --out");
   app.add_option("--out", opt.out, "PNG file written by --headless")->needs(headless);
-  app.add_option("--backend", opt.backend, "Renderer: mesa (in a window: the window's GL) or soft")
+  app.add_option("--backend", opt.backend,
+                 "Renderer: mesa (in a window: the window's GL), soft or glsl; with --check, the one checked (soft unless glsl)")
       ->capture_default_str();
   app.add_option("--keys", opt.keys, "Space-separated keys pressed before drawing, e.g. \"3 3 2\"");
   auto* check = app.add_flag("--check", opt.check, "Compare our lit vertices (feedback) and pixels with Mesa's")

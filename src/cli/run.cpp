@@ -1,6 +1,6 @@
 // ffcompat run: an unmodified classic GL program on ffcompat's libGL.so.1, libGLU.so.1 and
 // libglut.so.3 (build/classic), headless with scripted input, its frames written as PNGs; with
-// --compare, on Mesa and on soft with the same input, frame by frame (docs/run.md).
+// --compare, on Mesa and on --backend (soft, glsl, ...) with the same input, frame by frame (docs/run.md).
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -183,6 +183,17 @@ void check_options(const RunOptions& o) {
   }
   if (o.timeout <= 0) throw std::invalid_argument("--timeout must be more than 0 seconds");
   if (o.compare && o.window) throw std::invalid_argument("--compare runs headless; leave out --window");
+  if (o.compare && o.backend == "mesa") throw std::invalid_argument("--compare runs mesa against --backend: name one of ours");
+}
+
+// The names FFCOMPAT_BACKEND takes in libGL.so.1: glsl and glsl-phong beside soft's and mesa where
+// the GLSL backend is built (libGL.so.1 says which when it is not).
+std::vector<std::string> run_backend_names() {
+  std::vector<std::string> names = kBackendNames;
+#ifdef FFCOMPAT_WITH_GLSL
+  names.push_back("glsl"), names.push_back("glsl-phong");
+#endif
+  return names;
 }
 
 int run_single(const RunOptions& o, const std::string& classic) {
@@ -208,26 +219,28 @@ int run_single(const RunOptions& o, const std::string& classic) {
   return 0;
 }
 
+// Mesa against ours: `ours` is --backend (soft unless named), its frames in OUT/<ours>/.
 int run_compare(const RunOptions& o, const std::string& classic) {
   const fs::path dir = o.out;
   fs::create_directories(dir);
   clear_frames(dir);
+  const std::string& ours = o.backend;
   const Outcome mesa = run_once(o, "mesa", dir / "mesa", classic, (dir / "mesa" / "stdout.txt").string());
-  const Outcome soft = run_once(o, "soft", dir / "soft", classic, (dir / "soft" / "stdout.txt").string());
+  const Outcome soft = run_once(o, ours, dir / ours, classic, (dir / ours / "stdout.txt").string());
   std::vector<std::string> errors;
-  for (const auto& [name, r] : {std::pair{"mesa", mesa}, std::pair{"soft", soft}})
+  for (const auto& [name, r] : {std::pair{std::string("mesa"), mesa}, std::pair{ours, soft}})
     if (std::string why = failure(o, name, r); !why.empty()) errors.push_back(why);
   if (mesa.frames != soft.frames)
-    errors.push_back("frame counts differ: mesa " + std::to_string(mesa.frames) + ", soft " + std::to_string(soft.frames));
-  const bool stdout_same = slurp(dir / "mesa" / "stdout.txt") == slurp(dir / "soft" / "stdout.txt");
-  if (!stdout_same) errors.push_back("the program printed differently on mesa and on soft (" + (dir / "mesa" / "stdout.txt").string() +
-                                     ", " + (dir / "soft" / "stdout.txt").string() + ")");
+    errors.push_back("frame counts differ: mesa " + std::to_string(mesa.frames) + ", " + ours + " " + std::to_string(soft.frames));
+  const bool stdout_same = slurp(dir / "mesa" / "stdout.txt") == slurp(dir / ours / "stdout.txt");
+  if (!stdout_same) errors.push_back("the program printed differently on mesa and on " + ours + " (" + (dir / "mesa" / "stdout.txt").string() +
+                                     ", " + (dir / ours / "stdout.txt").string() + ")");
   nlohmann::json frames = nlohmann::json::array();
   int max_diff = 0;
   bool frames_ok = true;
   for (int i = 0; i < std::min(mesa.frames, soft.frames); ++i) {
     const image::Image a = image::read_png((dir / "mesa" / frame_name("frame", i)).string());
-    const image::Image b = image::read_png((dir / "soft" / frame_name("frame", i)).string());
+    const image::Image b = image::read_png((dir / ours / frame_name("frame", i)).string());
     if (a.width != b.width || a.height != b.height) {
       errors.push_back("frame " + std::to_string(i) + " sizes differ");
       frames_ok = false;
@@ -245,18 +258,19 @@ int run_compare(const RunOptions& o, const std::string& classic) {
   const bool pass = errors.empty() && frames_ok && mesa.frames > 0;
   if (o.json) {
     nlohmann::json j = {{"frames", frames},           {"max_diff", max_diff},          {"pass", pass},
-                        {"frames_mesa", mesa.frames}, {"frames_soft", soft.frames},   {"stdout_same", stdout_same},
-                        {"seconds_mesa", mesa.seconds}, {"seconds_soft", soft.seconds}};
+                        {"backend", ours},
+                        {"frames_mesa", mesa.frames}, {"frames_" + ours, soft.frames},   {"stdout_same", stdout_same},
+                        {"seconds_mesa", mesa.seconds}, {"seconds_" + ours, soft.seconds}};
     if (!errors.empty()) j["errors"] = errors;
     print_json(j);
   } else {
-    std::printf("%s: %d frame%s, largest difference %d step%s (mesa %.2f s, soft %.2f s)\n", pass ? "pass" : "FAIL",
+    std::printf("%s: %d frame%s, largest difference %d step%s (mesa %.2f s, %s %.2f s)\n", pass ? "pass" : "FAIL",
                 int(frames.size()), frames.size() == 1 ? "" : "s", max_diff, max_diff == 1 ? "" : "s", mesa.seconds,
-                soft.seconds);
+                ours.c_str(), soft.seconds);
   }
   for (const std::string& e : errors) std::fprintf(stderr, "ffcompat run: %s\n", e.c_str());
   // A program that could not run is an error (1); pictures that differ are a failed check (2).
-  for (const auto& [name, r] : {std::pair{"mesa", mesa}, std::pair{"soft", soft}})
+  for (const auto& [name, r] : {std::pair{std::string("mesa"), mesa}, std::pair{ours, soft}})
     if (!failure(o, name, r).empty()) return 1;
   return pass ? 0 : 2;
 }
@@ -266,16 +280,16 @@ int run_compare(const RunOptions& o, const std::string& classic) {
 void add_run(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   auto* cmd = app.add_subcommand("run", "Run a classic GLUT program on ffcompat's libGL/GLU/GLUT, headless, frames as PNGs");
-  cmd->add_option("--backend", o->backend, "Renderer: soft (ours) or mesa (OSMesa), or another of `ffcompat --version`")
-      ->check(CLI::IsMember(kBackendNames))
+  cmd->add_option("--backend", o->backend, "Renderer: soft (ours), glsl (our state, GLSL shaders) or mesa, or another of `ffcompat --version`; with --compare, the one compared with mesa")
+      ->check(CLI::IsMember(run_backend_names()))
       ->capture_default_str();
   cmd->add_option("--size", o->size, "Force every window to WxH (FFCOMPAT_RUN_SIZE)");
   cmd->add_option("--frames", o->frames, "Stop after N frames (default: one more than the longest input script)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--keys", o->keys, "Keys, one per frame after the first: characters, <up>, <f1>, <esc>, <ctrl+a>, <wait>");
   cmd->add_option("--clicks", o->clicks, "Mouse, one per frame after the first: 'X,Y[,left|middle|right]', 'X,Y>X2,Y2' (drag), 'X,Y,move', wait");
-  cmd->add_option("--out", o->out, "Folder for frame-NNN.png (with --compare: mesa/, soft/ and diff-NNN.png)")->required();
-  cmd->add_flag("--compare", o->compare, "Run on mesa and on soft with the same input; compare frame by frame (exit 2 past 1 step)");
+  cmd->add_option("--out", o->out, "Folder for frame-NNN.png (with --compare: mesa/, <backend>/ and diff-NNN.png)")->required();
+  cmd->add_flag("--compare", o->compare, "Run on mesa and on --backend (soft) with the same input; compare frame by frame (exit 2 past 1 step)");
   cmd->add_flag("--json", o->json, "Print the result as JSON (the program's stdout goes to OUT/stdout.txt)");
   cmd->add_option("--timeout", o->timeout, "Seconds a run may take before it is stopped and counted as a failure")->capture_default_str();
   cmd->add_flag("--window", o->window, "Show the frames in a window (GLFW) and take real input");

@@ -2,7 +2,8 @@
  * (glDrawElements) and a colour-interpolated triangle (glDrawArrays) drawn on soft, soft-double
  * and mesa through the plain gl* exports: each of ours within 1 step of Mesa's picture, and a
  * pixel of the quad at its hand-derived value on both. Two surfaces
- * alive at once, switched with make_current, each keeping its own state. */
+ * alive at once, switched with make_current, each keeping its own state. The first argument names
+ * the backend in soft's place ("glsl": two EGL contexts, one core and one compatibility, switched). */
 #include <math.h>
 #include <string.h>
 
@@ -116,12 +117,13 @@ static const unsigned char* px(const unsigned char* img, int x, int y_from_botto
   return img + ((size_t)(H - 1 - y_from_bottom) * W + x) * 4;
 }
 
-int main(void) {
+int main(int argc, char** argv) {
   require_ffcompat();
   static unsigned char soft_img[W * H * 4], mesa_img[W * H * 4], double_img[W * H * 4];
+  const char* ours = argc > 1 ? argv[1] : "soft";
 
-  ffcompat_surface* soft = surface_on("soft", W, H);
-  CHECK(strcmp(ffcompat_surface_backend(soft), "soft") == 0, "backend %s", ffcompat_surface_backend(soft));
+  ffcompat_surface* soft = surface_on(ours, W, H);
+  CHECK(strcmp(ffcompat_surface_backend(soft), ours) == 0, "backend %s", ffcompat_surface_backend(soft));
   CHECK(ffcompat_surface_width(soft) == W && ffcompat_surface_height(soft) == H, "size");
   view();
   clear();
@@ -136,9 +138,9 @@ int main(void) {
   CHECK(glGetError() == GL_NO_ERROR, "a GL error on mesa");
 
   ffcompat_surface_make_current(soft);
-  CHECK(glIsEnabled(GL_LIGHTING) == GL_TRUE, "soft's state did not survive the switch to mesa");
+  CHECK(glIsEnabled(GL_LIGHTING) == GL_TRUE, "%s's state did not survive the switch to mesa", ours);
   rest();
-  CHECK(glGetError() == GL_NO_ERROR, "a GL error on soft");
+  CHECK(glGetError() == GL_NO_ERROR, "a GL error on %s", ours);
 
   /* Our double-precision reference, the whole picture at once. */
   ffcompat_surface* dbl = surface_on("soft-double", W, H);
@@ -154,12 +156,12 @@ int main(void) {
 
   /* Within the quad, on each. */
   for (int k = 0; k < 3; ++k) {
-    CHECK(px(soft_img, 10, 10)[k] == 214, "soft quad channel %d = %d", k, px(soft_img, 10, 10)[k]);
+    CHECK(px(soft_img, 10, 10)[k] == 214, "%s quad channel %d = %d", ours, k, px(soft_img, 10, 10)[k]);
     CHECK(px(mesa_img, 10, 10)[k] == 214, "mesa quad channel %d = %d", k, px(mesa_img, 10, 10)[k]);
   }
   /* The clear colour in a corner no shape covers: 0.1, 0.2, 0.3 of 255 round to 26, 51, 76. */
   CHECK(px(soft_img, 1, H - 2)[0] == 26 && px(soft_img, 1, H - 2)[1] == 51 && px(soft_img, 1, H - 2)[2] == 76,
-        "soft clear colour");
+        "%s clear colour", ours);
 
   int max_diff = 0, drawn = 0, apart = 0, double_diff = 0;
   for (int i = 0; i < W * H * 4; ++i) {
@@ -170,9 +172,9 @@ int main(void) {
   }
   for (int i = 0; i < W * H; ++i)
     if (soft_img[4 * i] != 26 || soft_img[4 * i + 1] != 51 || soft_img[4 * i + 2] != 76) ++drawn;
-  printf("soft against mesa: largest difference %d steps, %d channels apart; soft-double %d steps; %d pixels drawn\n",
-         max_diff, apart, double_diff, drawn);
-  CHECK(max_diff <= 1, "soft and mesa %d steps apart", max_diff);
+  printf("%s against mesa: largest difference %d steps, %d channels apart; soft-double %d steps; %d pixels drawn\n",
+         ours, max_diff, apart, double_diff, drawn);
+  CHECK(max_diff <= 1, "%s and mesa %d steps apart", ours, max_diff);
   CHECK(double_diff <= 1, "soft-double and mesa %d steps apart", double_diff);
   /* The sphere (radius 26 pixels) alone covers over 2,000 pixels. */
   CHECK(drawn > 2000, "only %d pixels drawn", drawn);

@@ -2,7 +2,8 @@
  * surface with lighting set up grows to 80x48 (while the other surface is current) and keeps its
  * state, viewport included; drawn over the whole new area with the new viewport, the two pictures
  * agree within 1 step and the lit quad's hand-derived 214 is found where the old buffer ended.
- * Then shrinks to 16x16 and draws again. Bad sizes: -1, the surface unchanged. */
+ * Then shrinks to 16x16 and draws again. Bad sizes: -1, the surface unchanged. The first argument
+ * names the backend in soft's place ("glsl"). */
 #include <string.h>
 
 #include "classic_test.h"
@@ -27,10 +28,10 @@ static void draw(int w, int h) {
   glEnd();
 }
 
-int main(void) {
+int main(int argc, char** argv) {
   require_ffcompat();
   static unsigned char img[2][W * H * 4], small[2][16 * 16 * 4];
-  const char* names[2] = {"soft", "mesa"};
+  const char* names[2] = {argc > 1 ? argv[1] : "soft", "mesa"};
   ffcompat_surface* s[2];
   for (int b = 0; b < 2; ++b) {
     s[b] = surface_on(names[b], 32, 24);
@@ -66,9 +67,9 @@ int main(void) {
     if (abs(img[0][i] - img[1][i]) > max_diff) max_diff = abs(img[0][i] - img[1][i]);
   for (int i = 0; i < 16 * 16 * 4; ++i)
     if (abs(small[0][i] - small[1][i]) > max_diff) max_diff = abs(small[0][i] - small[1][i]);
-  printf("resized soft against mesa: largest difference %d steps\n", max_diff);
+  printf("resized %s against mesa: largest difference %d steps\n", names[0], max_diff);
   CHECK(max_diff <= 1, "%d steps apart", max_diff);
-  CHECK(small[0][(15 * 16 + 14) * 4] == 214, "soft after shrinking: %d", small[0][(15 * 16 + 14) * 4]);
+  CHECK(small[0][(15 * 16 + 14) * 4] == 214, "%s after shrinking: %d", names[0], small[0][(15 * 16 + 14) * 4]);
   ffcompat_surface_destroy(s[0]);
   ffcompat_surface_destroy(s[1]);
   CHECK(ffcompat_surface_resize(NULL, 8, 8) == -1, "resizing NULL");

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "gl/dispatch.h"
+#include "raster/raster.h"
 #include "state/soft_gl.h"
 
 namespace ffc::backends {
@@ -45,6 +46,11 @@ void GlslBackend::resume() {
   state::Context::make_current(context_.get());
   for (const std::string& name : gl::load(state::proc_address))
     throw std::runtime_error("glsl: no entry point for " + name);
+}
+
+void GlslBackend::resize(int width, int height) {
+  if (!context_) throw std::logic_error("glsl: resize() before begin()");
+  bind(), egl_->resize(width, height), context_->framebuffer() = raster::Framebuffer(width, height);
 }
 
 void GlslBackend::read_into(image::Image& img) {

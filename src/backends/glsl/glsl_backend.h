@@ -21,6 +21,8 @@ class GlslBackend final : public Backend {
   void begin(int width, int height) override;
   void resume() override;
   void read_into(image::Image& out) override;
+  // A new width x height pbuffer and framebuffer, the GL state kept (libGL.so.1's window resized).
+  void resize(int width, int height);
 
   // The sink, for the checks and `ffcompat glsl` (null before begin()).
   glsl::Renderer* renderer() { return renderer_.get(); }

@@ -14,7 +14,7 @@ extern "C" {
 typedef struct ffcompat_surface ffcompat_surface;
 
 /* Makes a width x height surface (RGBA8, 24-bit depth) in GL's default state on the backend named
- * by the environment variable FFCOMPAT_BACKEND ("soft" when unset; "mesa"; the other names of
+ * by the environment variable FFCOMPAT_BACKEND ("soft" when unset; "mesa"; "glsl"; the other names of
  * `ffcompat backends`) and makes it current. NULL on failure, with one line on stderr saying why. */
 ffcompat_surface* ffcompat_surface_create(int width, int height);
 /* Makes the surface current again, with its state and contents (on this thread); NULL: none. */

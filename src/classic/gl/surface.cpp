@@ -1,9 +1,11 @@
-// ffcompat_surface.h: a drawing surface on soft (ours, through backends::make) or mesa (OSMesa or
-// EGL, mesa_surface.h), each with its table of entry points for the exports.
+// ffcompat_surface.h: a drawing surface on soft (ours, through backends::make), glsl (our state
+// tracker drawing through a core-profile EGL context, also through backends::make) or mesa (OSMesa
+// or EGL, mesa_surface.h), each with its table of entry points for the exports.
 #include "ffcompat_surface.h"
 
 #include <GL/gl.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -18,13 +20,20 @@
 #include "state/context.h"
 #include "state/soft_gl.h"
 #include "table.h"
+#ifdef FFCOMPAT_CLASSIC_GLSL
+#include "backends/glsl/glsl_backend.h"
+#include "platform/egl_context.h"
+#endif
 
 struct ffcompat_surface {
   std::string backend;
   int width = 0, height = 0;
   ffc::classic::Table table;
-  std::unique_ptr<ffc::backends::Backend> soft;  // one of these two
+  std::unique_ptr<ffc::backends::Backend> soft;  // one of these two (glsl's is a soft one: our state)
   std::unique_ptr<ffc::classic::MesaSurface> mesa;
+#ifdef FFCOMPAT_CLASSIC_GLSL
+  ffc::backends::GlslBackend* glsl = nullptr;  // `soft`, when it is the GLSL backend
+#endif
   std::string platform;  // mesa's: "osmesa" or "egl"
 };
 
@@ -55,6 +64,28 @@ std::string valid_names() {
   }
   return mesa ? out : out + ", mesa";
 }
+
+#ifdef FFCOMPAT_CLASSIC_GLSL
+// glsl surfaces alive. OSMesa and EGL share Mesa's dispatch (libglapi): with a glsl surface's EGL
+// context bound there, OSMesa takes that context for its own current one when it finishes or reads
+// a mesa surface and puts it back after (osmesa.cpp), reading OSMesa's fields out of an EGL context
+// (measured: "OSMesaMakeCurrent(unsupported format/type)"). Such work on a mesa surface is done
+// with EGL released, the current surface bound again after.
+std::atomic<int> g_glsl_surfaces{0};
+struct EglQuiet {
+  bool on;
+  explicit EglQuiet(const ffcompat_surface* s) : on(s->mesa && g_glsl_surfaces.load() > 0) {
+    if (on) ffc::platform::EglContext::release();
+  }
+  ~EglQuiet() {
+    if (on && g_surface) ffcompat_surface_make_current(g_surface);
+  }
+};
+#else
+struct EglQuiet {
+  explicit EglQuiet(const ffcompat_surface*) {}
+};
+#endif
 
 bool valid_size(int width, int height) { return width > 0 && height > 0 && width <= 16384 && height <= 16384; }
 
@@ -94,9 +125,15 @@ ffcompat_surface* ffcompat_surface_create(int width, int height) {
       }
       s->mesa->fill(s->table);
     } else {
+      // glsl keeps our state::Context as soft does (the same entry points); only its draws go to
+      // an EGL core-profile context.
       s->soft = ffc::backends::make(name);
       s->soft->begin(width, height);
       s->table = soft_table();
+#ifdef FFCOMPAT_CLASSIC_GLSL
+      s->glsl = dynamic_cast<ffc::backends::GlslBackend*>(s->soft.get());
+      if (s->glsl) g_glsl_surfaces.fetch_add(1);
+#endif
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ffcompat: cannot make a %s surface: %s\n", name.c_str(), e.what());
@@ -113,6 +150,9 @@ void ffcompat_surface_make_current(ffcompat_surface* s) {
     // EGL keeps a context current until told otherwise, and a window's own EGL context (our
     // GLUT's GLFW window) is about to be made current: ours is released first.
     if (g_surface && g_surface->mesa) g_surface->mesa->release();
+#ifdef FFCOMPAT_CLASSIC_GLSL
+    if (g_surface && g_surface->glsl) ffc::platform::EglContext::release();
+#endif
     ffc::classic::g_current = nullptr;
     g_surface = nullptr;
     return;
@@ -131,21 +171,45 @@ void ffcompat_surface_make_current(ffcompat_surface* s) {
 
 void ffcompat_surface_read_rgba(ffcompat_surface* s, unsigned char* out) {
   if (!s || !out) return;
-  if (s->mesa) return s->mesa->read_rgba(out);
+  if (s->mesa) {
+    const EglQuiet quiet(s);
+    return s->mesa->read_rgba(out);
+  }
+#ifdef FFCOMPAT_CLASSIC_GLSL
+  // A glsl surface read while another is current: EGL may still count this context as current
+  // after OSMesa took Mesa's dispatch (GlslBackend::bind), so it is released and bound for the
+  // read, and the current surface gets its context back.
+  if (s->glsl && g_surface != s) ffc::platform::EglContext::release();
+#endif
   ffc::image::Image img;
   s->soft->read_into(img);
   std::memcpy(out, img.rgba.data(), img.rgba.size());
+#ifdef FFCOMPAT_CLASSIC_GLSL
+  if (s->glsl && g_surface && g_surface != s) ffcompat_surface_make_current(g_surface);
+#endif
 }
 
 int ffcompat_surface_resize(ffcompat_surface* s, int width, int height) {
   if (!s || !valid_size(width, height)) return -1;
   if (s->mesa) {
     try {
+      const EglQuiet quiet(s);
       s->mesa->resize(width, height);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "ffcompat: cannot resize the %s surface: %s\n", s->backend.c_str(), e.what());
       return -1;
     }
+#ifdef FFCOMPAT_CLASSIC_GLSL
+  } else if (s->glsl) {
+    // Resizing binds the surface's EGL context; the current surface, another, gets its own back.
+    try {
+      s->glsl->resize(width, height);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ffcompat: cannot resize the %s surface: %s\n", s->backend.c_str(), e.what());
+      return -1;
+    }
+    if (g_surface && g_surface != s) ffcompat_surface_make_current(g_surface);
+#endif
   } else {
     // The soft context is reached by making it current (the backend keeps it to itself); the
     // context that was current before comes back after. A new Framebuffer is all a size is: the
@@ -172,7 +236,14 @@ void ffcompat_surface_destroy(ffcompat_surface* s) {
   if (!s) return;
   if (ffc::classic::g_current == &s->table) ffc::classic::g_current = nullptr;
   if (g_surface == s) g_surface = nullptr;
-  delete s;
+#ifdef FFCOMPAT_CLASSIC_GLSL
+  if (s->glsl) g_glsl_surfaces.fetch_sub(1);
+#endif
+  {
+    const EglQuiet quiet(s);
+    delete s;  // a glsl or EGL surface binds its own context to free its objects: the current one's comes back
+  }
+  if (g_surface) ffcompat_surface_make_current(g_surface);
 }
 
 void* ffcompat_get_proc_address(const char* name) { return ffc::classic::export_address(name); }
