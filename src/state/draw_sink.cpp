@@ -3,6 +3,7 @@
 #include "state/draw_sink.h"
 
 #include <cstdio>
+#include <cstring>
 #include <mutex>
 #include <set>
 
@@ -13,7 +14,11 @@ namespace ffc::state {
 
 SinkState Context::sink_state() {
   SinkState s;
+  // Padding zeroed, so that equal states have equal bytes (the GLSL backend's uniform cache
+  // compares them); every value is set below.
+  std::memset(static_cast<void*>(static_cast<SinkValues*>(&s)), 0, sizeof(SinkValues));
   s.lighting = lighting_;
+  s.key = lighting::Key{}, s.normal_inverse = glm::dmat3(1), s.rescale = 0;
   if (lighting_) {
     update_vertex_constants();  // the normal matrix as soft's stage takes it (and the same deviations noted)
     s.key = key();
@@ -80,7 +85,18 @@ void Context::sink_elements(GLenum mode, GLsizei count, GLenum type, const void*
   if (count == 0) return;
   const uint8_t* p = static_cast<const uint8_t*>(indices);
   elements_.resize(size_t(count));
-  for (GLsizei i = 0; i < count; ++i) elements_[size_t(i)] = uint32_t(read_component(p, type, i, Fixed::Raw));
+  auto widen = [&](auto unit) {  // the unsigned types glDrawElements takes, copied as they are
+    for (GLsizei i = 0; i < count; ++i) {
+      decltype(unit) v;
+      std::memcpy(&v, p + size_t(i) * sizeof v, sizeof v);
+      elements_[size_t(i)] = v;
+    }
+  };
+  if (type == GL_UNSIGNED_INT) std::memcpy(elements_.data(), p, size_t(count) * sizeof(uint32_t));
+  else if (type == GL_UNSIGNED_SHORT) widen(uint16_t{});
+  else if (type == GL_UNSIGNED_BYTE) widen(uint8_t{});
+  else
+    for (GLsizei i = 0; i < count; ++i) elements_[size_t(i)] = uint32_t(read_component(p, type, i, Fixed::Raw));
   uint32_t lo = 0, hi = 0;
   index_range(elements_.data(), elements_.size(), lo, hi);
   if (fits_in_memory(uint64_t(hi - lo) + 1)) {
