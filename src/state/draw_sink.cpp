@@ -58,18 +58,38 @@ void Context::sink_end() {
   sink_verts_.clear();
 }
 
+namespace {
+
+// Element i of `a`, n components (the others from `fill`), in float. Float arrays are read as
+// floats: the general reader's widening to double and back gives the same values, at several
+// times the cost on a large draw.
+inline glm::vec4 fetch(const ClientArray& a, GLint i, int n, Fixed fixed, const glm::dvec4& fill) {
+  if (a.type != GL_FLOAT || a.repeated) return glm::vec4(attribute(a, i, n, fixed, fill));
+  const uint8_t* p = element(a, i);
+  glm::vec4 v(fill);
+  switch (n) {  // fixed sizes: copies to registers, not a library call
+    case 4: std::memcpy(&v, p, 4 * sizeof(float)); break;
+    case 3: std::memcpy(&v, p, 3 * sizeof(float)); break;
+    case 2: std::memcpy(&v, p, 2 * sizeof(float)); break;
+    default: std::memcpy(&v, p, sizeof(float)); break;
+  }
+  return v;
+}
+
+}  // namespace
+
 // Array elements [first, first + count) as a draw reads them into sink_verts_: each attribute
 // from its array when enabled, else the current value; the current values do not change.
 void Context::sink_fetch(GLint first, GLsizei count) {
   sink_verts_.resize(size_t(count));
+  const glm::vec3 normal(normal_);
+  const glm::vec4 color(color_);
   for (GLsizei k = 0; k < count; ++k) {
     const GLint i = first + k;
     SinkVertex& v = sink_verts_[size_t(k)];
-    v.position = glm::vec4(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
-    v.normal = normal_array_.enabled ? glm::vec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0)))
-                                     : glm::vec3(normal_);
-    v.color = color_array_.enabled ? glm::vec4(attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1)))
-                                   : glm::vec4(color_);
+    v.position = fetch(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
+    v.normal = normal_array_.enabled ? glm::vec3(fetch(normal_array_, i, 3, draw_fixed(), glm::dvec4(0))) : normal;
+    v.color = color_array_.enabled ? fetch(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1)) : color;
   }
 }
 

@@ -21,6 +21,10 @@ namespace ffc::state {
 
 // One vertex as the sink's buffers hold it (the layout the GLSL backend streams: 11 floats).
 struct SinkVertex {
+  // Made unset: a draw's vertices are written whole before they are read, and a vector resized for
+  // a large draw then zeroes nothing.
+  SinkVertex() {}
+  SinkVertex(const glm::vec4& p, const glm::vec3& n, const glm::vec4& c) : position(p), normal(n), color(c) {}
   glm::vec4 position;
   glm::vec3 normal;
   glm::vec4 color;
