@@ -25,8 +25,9 @@ void add_bench(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
   opts->add_to(cmd, true, false);
-  refuse_option(cmd, "--backend", "bench takes --backends, a comma-separated list of mesa, soft and soft-double");
-  cmd->add_option("--backends", *backends_list, "Comma-separated: mesa, soft, soft-double")->capture_default_str();
+  refuse_option(cmd, "--backend", "bench takes --backends, a comma-separated list of backends (mesa, soft, glsl, ...)");
+  cmd->add_option("--backends", *backends_list, "Comma-separated: mesa, soft, soft-double, glsl, ... (every registered backend)")
+      ->capture_default_str();
   cmd->add_option("--frames", *frames, "Timed frames per backend (after one warm-up frame)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();

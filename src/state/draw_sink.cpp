@@ -3,6 +3,7 @@
 #include "state/draw_sink.h"
 
 #include <cstdio>
+#include <cstring>
 #include <mutex>
 #include <set>
 
@@ -13,7 +14,11 @@ namespace ffc::state {
 
 SinkState Context::sink_state() {
   SinkState s;
+  // Padding zeroed, so that equal states have equal bytes (the GLSL backend's uniform cache
+  // compares them); every value is set below.
+  std::memset(static_cast<void*>(static_cast<SinkValues*>(&s)), 0, sizeof(SinkValues));
   s.lighting = lighting_;
+  s.key = lighting::Key{}, s.normal_inverse = glm::dmat3(1), s.rescale = 0;
   if (lighting_) {
     update_vertex_constants();  // the normal matrix as soft's stage takes it (and the same deviations noted)
     s.key = key();
@@ -53,18 +58,38 @@ void Context::sink_end() {
   sink_verts_.clear();
 }
 
+namespace {
+
+// Element i of `a`, n components (the others from `fill`), in float. Float arrays are read as
+// floats: the general reader's widening to double and back gives the same values, at several
+// times the cost on a large draw.
+inline glm::vec4 fetch(const ClientArray& a, GLint i, int n, Fixed fixed, const glm::dvec4& fill) {
+  if (a.type != GL_FLOAT || a.repeated) return glm::vec4(attribute(a, i, n, fixed, fill));
+  const uint8_t* p = element(a, i);
+  glm::vec4 v(fill);
+  switch (n) {  // fixed sizes: copies to registers, not a library call
+    case 4: std::memcpy(&v, p, 4 * sizeof(float)); break;
+    case 3: std::memcpy(&v, p, 3 * sizeof(float)); break;
+    case 2: std::memcpy(&v, p, 2 * sizeof(float)); break;
+    default: std::memcpy(&v, p, sizeof(float)); break;
+  }
+  return v;
+}
+
+}  // namespace
+
 // Array elements [first, first + count) as a draw reads them into sink_verts_: each attribute
 // from its array when enabled, else the current value; the current values do not change.
 void Context::sink_fetch(GLint first, GLsizei count) {
   sink_verts_.resize(size_t(count));
+  const glm::vec3 normal(normal_);
+  const glm::vec4 color(color_);
   for (GLsizei k = 0; k < count; ++k) {
     const GLint i = first + k;
     SinkVertex& v = sink_verts_[size_t(k)];
-    v.position = glm::vec4(attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1)));
-    v.normal = normal_array_.enabled ? glm::vec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0)))
-                                     : glm::vec3(normal_);
-    v.color = color_array_.enabled ? glm::vec4(attribute(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1)))
-                                   : glm::vec4(color_);
+    v.position = fetch(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
+    v.normal = normal_array_.enabled ? glm::vec3(fetch(normal_array_, i, 3, draw_fixed(), glm::dvec4(0))) : normal;
+    v.color = color_array_.enabled ? fetch(color_array_, i, color_array_.size, draw_fixed(), glm::dvec4(1)) : color;
   }
 }
 
@@ -80,7 +105,18 @@ void Context::sink_elements(GLenum mode, GLsizei count, GLenum type, const void*
   if (count == 0) return;
   const uint8_t* p = static_cast<const uint8_t*>(indices);
   elements_.resize(size_t(count));
-  for (GLsizei i = 0; i < count; ++i) elements_[size_t(i)] = uint32_t(read_component(p, type, i, Fixed::Raw));
+  auto widen = [&](auto unit) {  // the unsigned types glDrawElements takes, copied as they are
+    for (GLsizei i = 0; i < count; ++i) {
+      decltype(unit) v;
+      std::memcpy(&v, p + size_t(i) * sizeof v, sizeof v);
+      elements_[size_t(i)] = v;
+    }
+  };
+  if (type == GL_UNSIGNED_INT) std::memcpy(elements_.data(), p, size_t(count) * sizeof(uint32_t));
+  else if (type == GL_UNSIGNED_SHORT) widen(uint16_t{});
+  else if (type == GL_UNSIGNED_BYTE) widen(uint8_t{});
+  else
+    for (GLsizei i = 0; i < count; ++i) elements_[size_t(i)] = uint32_t(read_component(p, type, i, Fixed::Raw));
   uint32_t lo = 0, hi = 0;
   index_range(elements_.data(), elements_.size(), lo, hi);
   if (fits_in_memory(uint64_t(hi - lo) + 1)) {

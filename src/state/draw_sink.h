@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "lighting/lighting.h"
@@ -20,12 +21,20 @@ namespace ffc::state {
 
 // One vertex as the sink's buffers hold it (the layout the GLSL backend streams: 11 floats).
 struct SinkVertex {
+  // Made unset: a draw's vertices are written whole before they are read, and a vector resized for
+  // a large draw then zeroes nothing.
+  SinkVertex() {}
+  SinkVertex(const glm::vec4& p, const glm::vec3& n, const glm::vec4& c) : position(p), normal(n), color(c) {}
   glm::vec4 position;
   glm::vec3 normal;
   glm::vec4 color;
 };
 
-struct SinkState {
+// Every value of the snapshot but the list of names: trivially copyable, so that the GLSL
+// backend can compare two draws' states byte by byte (its uniform cache, uniform_cache.h) and
+// reuse the uniforms it made for equal bytes. A value that feeds a uniform belongs here (or behind
+// one of the pointers the cache compares: lights, materials, fragment).
+struct SinkValues {
   bool lighting = false;
   lighting::Key key;  // Key{} when lighting is off
   const lighting::LightParams* lights = nullptr;        // [8], positions and directions in eye space
@@ -45,10 +54,15 @@ struct SinkState {
   const FragmentState* fragment = nullptr;  // scissor, blending, masks, alpha test, stipple
   glm::vec4 clear_color{0};
   double clear_depth = 1;
+};
+
+struct SinkState : SinkValues {
   // Enabled state that changes pictures and that the sink is not given (fog, polygon offset and
   // modes, ...): one line each, for the sink to report.
   std::vector<std::string> unsupported;
 };
+
+static_assert(std::is_trivially_copyable_v<SinkValues>, "compared byte by byte: no owning members");
 
 class DrawSink {
  public:

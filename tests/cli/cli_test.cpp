@@ -257,4 +257,22 @@ TEST(Cli, BenchReportsMediansTheRatioAndNoAllocationPerFrame) {
   EXPECT_NE(ffcompat("bench --scene cube --frames 2 --threads -1").status, 0);
 }
 
+#ifdef FFCOMPAT_WITH_GLSL
+// The GLSL backend keeps its buffers, lists and uniform values: after the warm-up frame (programs
+// compiled, states seen) a frame allocates nothing, on each draw path, with two programs a frame
+// (the cube: unlit and lit) and with twelve materials on one program (material_grid).
+TEST(Cli, GlslBenchAllocatesNothingPerFrame) {
+  const fs::path grid = fs::path(__FILE__).parent_path().parent_path().parent_path() / "scenes" / "material_grid.toml";
+  for (const std::string& scene : {std::string("--scene icosphere --depth 3"), std::string("--scene cube"), "--scene '" + grid.string() + "'"})
+    for (const char* draw : {"elements", "arrays", "immediate"}) {
+      const std::string args = "bench " + scene + " --draw " + draw + " --frames 4 --block 2 --backends glsl --json";
+      const Result r = ffcompat(args);
+      ASSERT_EQ(r.status, 0) << args;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_GT(j["median_ms"]["glsl"].get<double>(), 0) << args;
+      EXPECT_EQ(j["allocations_per_frame"]["glsl"], 0.0) << args;
+    }
+}
+#endif
+
 }  // namespace

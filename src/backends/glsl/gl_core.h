@@ -19,7 +19,8 @@ namespace ffc::glsl {
   X(decltype(&::glPointSize), PointSize) X(decltype(&::glLineWidth), LineWidth)                           \
   X(decltype(&::glReadPixels), ReadPixels) X(decltype(&::glPixelStorei), PixelStorei)                     \
   X(decltype(&::glFinish), Finish) X(decltype(&::glGetError), GetError)                                   \
-  X(decltype(&::glDrawElements), DrawElements)                                                            \
+  X(decltype(&::glDrawElements), DrawElements) X(decltype(&::glDrawArrays), DrawArrays)                   \
+  X(decltype(&::glGetIntegerv), GetIntegerv) X(PFNGLDRAWRANGEELEMENTSPROC, DrawRangeElements)           \
   X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate) X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate) \
   X(PFNGLBLENDCOLORPROC, BlendColor)                                                                      \
   X(PFNGLCREATESHADERPROC, CreateShader) X(PFNGLSHADERSOURCEPROC, ShaderSource)                           \
@@ -34,9 +35,11 @@ namespace ffc::glsl {
   X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays) X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)               \
   X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays) X(PFNGLGENBUFFERSPROC, GenBuffers)                   \
   X(PFNGLBINDBUFFERPROC, BindBuffer) X(PFNGLBUFFERDATAPROC, BufferData)                                   \
+  X(PFNGLMAPBUFFERRANGEPROC, MapBufferRange) X(PFNGLUNMAPBUFFERPROC, UnmapBuffer)                         \
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers) X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                 \
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                                    \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                            \
+  X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray) X(PFNGLGETATTRIBLOCATIONPROC, GetAttribLocation) \
   X(PFNGLTRANSFORMFEEDBACKVARYINGSPROC, TransformFeedbackVaryings)                                        \
   X(PFNGLBINDBUFFERBASEPROC, BindBufferBase) X(PFNGLBEGINTRANSFORMFEEDBACKPROC, BeginTransformFeedback)   \
   X(PFNGLENDTRANSFORMFEEDBACKPROC, EndTransformFeedback)

@@ -6,7 +6,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "backends/glsl/primitives.h"
 #include "raster/raster.h"
 
 namespace ffc::glsl {
@@ -40,32 +39,26 @@ bool any_outside(const state::SinkState& s, const state::SinkVertex* v, size_t c
 
 }  // namespace
 
-Renderer::Renderer(const CoreGl& gl) : gl_(gl) {
-  static_assert(sizeof(state::SinkVertex) == 11 * sizeof(float), "SinkVertex is streamed as 11 floats");
+Renderer::Renderer(const CoreGl& gl) : gl_(gl), vertices_(gl), elements_(gl, GL_ELEMENT_ARRAY_BUFFER) {
   gl_.GenVertexArrays(1, &vao_);
-  gl_.BindVertexArray(vao_);
-  GLuint b[3];
-  gl_.GenBuffers(3, b);
-  vbo_ = b[0], ebo_ = b[1], tfb_ = b[2];
-  gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_);
-  gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
-  const GLsizei stride = sizeof(state::SinkVertex);
-  gl_.VertexAttribPointer(kPosition, 4, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(offsetof(state::SinkVertex, position)));
-  gl_.VertexAttribPointer(kNormal, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(state::SinkVertex, normal)));
-  gl_.VertexAttribPointer(kColor, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(state::SinkVertex, color)));
-  for (GLuint a : {kPosition, kNormal, kColor}) gl_.EnableVertexAttribArray(a);
+  gl_.BindVertexArray(vao_);  // the streams bind their buffers to it (the element buffer is its state)
+  gl_.GenBuffers(1, &tfb_);
   // A new buffer's contents are undefined in GL; llvmpipe's start at 0, and soft's too: cleared
   // here so that a program drawing without glClear sees the same on every backend.
   gl_.ClearColor(0, 0, 0, 0);
   gl_.ClearDepth(0);
   gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // llvmpipe's pbuffer is BGRA: read in RGBA, Mesa converts through a blit to a staging texture;
+  // in its own order it copies, and read_back swaps red and blue as it flips the rows.
+  GLint format = 0, type = 0;
+  gl_.GetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
+  gl_.GetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
+  if (format == GL_BGRA && type == GL_UNSIGNED_BYTE) read_format_ = GL_BGRA;
 }
 
 Renderer::~Renderer() {
   for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
-  const GLuint b[3] = {vbo_, ebo_, tfb_};
-  gl_.DeleteBuffers(3, b);
+  gl_.DeleteBuffers(1, &tfb_);
   gl_.DeleteVertexArrays(1, &vao_);
 }
 
@@ -85,7 +78,7 @@ Renderer::Program& Renderer::program_for(const ProgramKey& k) {
     return it->second;
   }
   ++stats_.compiles;
-  Program p;
+  Program p(k);
   p.order = programs_.size();
   p.info.key = k;
   p.info.sources = generate(k);
@@ -108,6 +101,7 @@ Renderer::Program& Renderer::program_for(const ProgramKey& k) {
     gl_.GetProgramInfoLog(p.id, sizeof log, nullptr, log);
     throw std::runtime_error(std::string("glsl: a generated program does not link: ") + log);
   }
+  p.format = format_of(gl_, p.id);
   for (const Uniform& u : p.info.uniforms) p.locations.push_back(gl_.GetUniformLocation(p.id, u.name.c_str()));
   p.uploaded.assign(p.info.uniforms.size(), false);
   return programs_.emplace(id, std::move(p)).first->second;
@@ -115,7 +109,7 @@ Renderer::Program& Renderer::program_for(const ProgramKey& k) {
 
 // Each uniform is sent when its value differs from the one the program holds.
 void Renderer::upload(Program& p, const state::SinkState& s) {
-  const std::vector<Uniform> now = uniforms(p.info.key, &s);
+  const std::vector<Uniform>& now = p.cache.values(s);
   for (size_t i = 0; i < now.size(); ++i) {
     Uniform& held = p.info.uniforms[i];
     if (p.uploaded[i] && std::memcmp(held.value.data(), now[i].value.data(), sizeof(float) * size_t(now[i].size)) == 0)
@@ -180,30 +174,36 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   SplitRule rule;
   rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_;
   if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
-  const GLenum list_mode = decompose(mode, indices, n, rule, list_);
-  if (list_.empty()) return;
+  const DrawList list = listed(mode, indices, n, count, rule, list_);
+  if (list.count == 0) return;
   ++stats_.draws;
   Program& p = program_for(ProgramKey::of(s, phong_));
   ++p.info.draws;
   gl_.UseProgram(p.id);
   upload(p, s);
   apply(s);
-  // Orphaned each draw: the driver gives fresh storage while earlier draws still read the old.
-  gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_);
-  gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(state::SinkVertex)), v, GL_STREAM_DRAW);
-  gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(list_.size() * sizeof(uint32_t)), list_.data(), GL_STREAM_DRAW);
-  if (capture_) return capture_draw(s, list_mode, p, list_.size());
-  gl_.DrawElements(list_mode, GLsizei(list_.size()), GL_UNSIGNED_INT, nullptr);
+  vertices_.upload(p.format, v, count);
+  if (list.indices) elements_.write(list.indices, list.count * sizeof(uint32_t));
+  if (capture_) return capture_draw(s, list, p);
+  submit(list);
+}
+
+void Renderer::submit(const DrawList& list) {
+  if (list.indices)
+    gl_.DrawRangeElements(list.mode, 0, GLuint(list.vertices - 1), GLsizei(list.count), GL_UNSIGNED_INT, nullptr);
+  else gl_.DrawArrays(list.mode, 0, GLsizei(list.count));
 }
 
 // Transform feedback writes each listed vertex's gl_Position and colours, in list order.
-void Renderer::capture_draw(const state::SinkState& s, GLenum list_mode, const Program& p, size_t n) {
+void Renderer::capture_draw(const state::SinkState& s, const DrawList& list, const Program& p) {
+  const GLenum list_mode = list.mode;
+  const size_t n = list.count;
   const size_t floats = 4 * p.info.sources.feedback.size();
   gl_.BindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, tfb_);
   gl_.BufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(n * floats * sizeof(float)), nullptr, GL_STREAM_READ);
   gl_.BindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, tfb_);
   gl_.BeginTransformFeedback(list_mode);
-  gl_.DrawElements(list_mode, GLsizei(n), GL_UNSIGNED_INT, nullptr);
+  submit(list);
   gl_.EndTransformFeedback();
   std::vector<float> out(n * floats);
   gl_.GetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, GLsizeiptr(out.size() * sizeof(float)), out.data());
@@ -230,12 +230,24 @@ void Renderer::clear(const state::SinkState& s, GLbitfield mask) {
 }
 
 void Renderer::read_back(uint8_t* rgba, int width, int height) {
-  std::vector<uint8_t> rows(size_t(width) * size_t(height) * 4);
-  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl_.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
   const size_t row = size_t(width) * 4;
-  for (int y = 0; y < height; ++y)  // GL's bottom row first, to the top row first
-    std::memcpy(rgba + size_t(y) * row, rows.data() + size_t(height - 1 - y) * row, row);
+  pixels_.resize(row * size_t(height));  // kept: no allocation after the first frame
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_.ReadPixels(0, 0, width, height, read_format_, GL_UNSIGNED_BYTE, pixels_.data());
+  for (int y = 0; y < height; ++y) {  // GL's bottom row first, to the top row first
+    const uint8_t* from = pixels_.data() + size_t(height - 1 - y) * row;
+    uint8_t* to = rgba + size_t(y) * row;
+    if (read_format_ == GL_RGBA) {
+      std::memcpy(to, from, row);
+      continue;
+    }
+    for (size_t x = 0; x < row; x += 4) {  // BGRA to RGBA: bytes 0 and 2 swapped, a word at a time
+      uint32_t v;
+      std::memcpy(&v, from + x, 4);
+      v = (v & 0xFF00FF00u) | (v & 0xFFu) << 16 | (v >> 16 & 0xFFu);
+      std::memcpy(to + x, &v, 4);
+    }
+  }
 }
 
 }  // namespace ffc::glsl

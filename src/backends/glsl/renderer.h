@@ -1,7 +1,9 @@
 // The GLSL backend's draw sink: what our state tracker assembles, drawn through a core-profile
 // context with the program generated for the state's key (cached by key), the uniforms uploaded
-// when their values change, the vertices streamed into one buffer (orphaned each draw). It can
-// also record what the vertex shader computes (transform feedback), for `ffcompat check`.
+// when their values change (uniform_cache.h), the vertices the program reads streamed into one buffer
+// (vertex_stream.h), GL's lists drawn from the caller's indices (draw_list.h). Nothing is allocated per draw
+// once a scene's programs and states were seen. It can also record what the vertex shader computes
+// (transform feedback), for `ffcompat check`.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -9,8 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "backends/glsl/draw_list.h"
 #include "backends/glsl/gl_core.h"
 #include "backends/glsl/shader_gen.h"
+#include "backends/glsl/uniform_cache.h"
+#include "backends/glsl/vertex_stream.h"
 #include "state/draw_sink.h"
 
 namespace ffc::glsl {
@@ -60,7 +65,10 @@ class Renderer final : public state::DrawSink {
 
  private:
   struct Program {
+    explicit Program(const ProgramKey& k) : cache(k) {}
     GLuint id = 0;
+    UniformCache cache;
+    VertexFormat format;  // the attributes it reads
     std::vector<GLint> locations;  // per uniform of info.uniforms
     std::vector<bool> uploaded;
     ProgramInfo info;
@@ -70,12 +78,17 @@ class Renderer final : public state::DrawSink {
   void upload(Program& p, const state::SinkState& s);
   void apply(const state::SinkState& s);
   void apply_fragment(const state::SinkState& s);
-  void capture_draw(const state::SinkState& s, GLenum list_mode, const Program& p, size_t index_count);
+  void submit(const DrawList& list);
+  void capture_draw(const state::SinkState& s, const DrawList& list, const Program& p);
 
   const CoreGl& gl_;
-  GLuint vao_ = 0, vbo_ = 0, ebo_ = 0, tfb_ = 0;
+  GLuint vao_ = 0, tfb_ = 0;
+  VertexStream vertices_;
+  StreamBuffer elements_;  // the draw's list
   std::map<uint64_t, Program> programs_;
-  std::vector<uint32_t> list_;
+  std::vector<uint32_t> list_;    // decompose()'s lists, kept for the next draw
+  std::vector<uint8_t> pixels_;   // read_back's rows as GL reads them
+  GLenum read_format_ = GL_RGBA;  // the colour buffer's own order, read without conversion
   bool capture_ = false, phong_ = false;
   std::vector<CapturedDraw> captured_;
   Stats stats_;
