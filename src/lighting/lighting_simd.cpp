@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <exception>
 
 #include "lighting/lighting_simd.h"
 #include "simd/target.h"
@@ -204,8 +206,17 @@ HWY_EXPORT(Lanes);
 
 namespace {
 // FFCOMPAT_SIMD applies before the first dispatch (a function-local static: one load afterwards).
+// A value naming no target is reported once and the best target runs: this is inside a GL call,
+// where an exception would end the program (the command line reports it before drawing).
 void configure_once() {
-  static const bool configured = (simd::configure_from_environment(), true);
+  static const bool configured = [] {
+    try {
+      simd::configure_from_environment();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "ffcompat: %s\n", e.what());
+    }
+    return true;
+  }();
   (void)configured;
 }
 }  // namespace
