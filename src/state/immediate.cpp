@@ -1,6 +1,7 @@
 // Immediate mode (GL 2.1 section 2.6): glBegin / glVertex / glEnd and the current normal and
-// colour. GL_TRIANGLES while rendering in float keeps the vertices as sent and lights them
-// together at glEnd on the triangle-list path; every other primitive goes vertex by vertex.
+// colour. A glVertex is a store: GL_TRIANGLES while rendering in float keeps the vertices as sent
+// (a repeated one shared) and lights them together at glEnd on the triangle-list path; every
+// other primitive keeps them in a batch lit before anything reads them (light_pending).
 #include <algorithm>
 
 #include "state/context.h"

@@ -1,9 +1,10 @@
 // The vertex stage, written once (GL 2.1 sections 2.11 to 2.14; what Mesa's ffvertex_prog.c
 // builds): fetch, transform to eye and clip space, the normal to eye space (normalized or
 // rescaled), lighting through the kernel chosen by the lighting key, or the colour clamped.
-// Every path runs it, in batches of up to kBatch vertices:
-//   - one vertex at a time (glVertex, glArrayElement, small draws, glRasterPos in spec mode):
-//     vertex() and process_vertex(), into raster::Vertex;
+// Every path runs it, in batches of up to kBatch vertices (float: on columns, a vector of vertices
+// at a time, vertex_stage_simd.cpp and lighting/lighting_simd.cpp):
+//   - glVertex, glArrayElement and small draws: process_vertex() keeps them, light_pending()
+//     lights the batch into raster::Vertex; glRasterPos in spec mode: vertex(), one;
 //   - a large draw on the general path: arrays_to_vertices(), into verts_, on the threads;
 //   - the triangle-list path: arrays_to_list() and immediate_to_list() (immediate mode's
 //     vertices kept for the list), into raster::ListVertices, on the threads.
