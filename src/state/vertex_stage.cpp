@@ -1,9 +1,10 @@
 // The vertex stage, written once (GL 2.1 sections 2.11 to 2.14; what Mesa's ffvertex_prog.c
 // builds): fetch, transform to eye and clip space, the normal to eye space (normalized or
 // rescaled), lighting through the kernel chosen by the lighting key, or the colour clamped.
-// Every path runs it, in batches of up to kBatch vertices:
-//   - one vertex at a time (glVertex, glArrayElement, small draws, glRasterPos in spec mode):
-//     vertex() and process_vertex(), into raster::Vertex;
+// Every path runs it, in batches of up to kBatch vertices (float: on columns, a vector of vertices
+// at a time, vertex_stage_simd.cpp and lighting/lighting_simd.cpp):
+//   - glVertex, glArrayElement and small draws: process_vertex() keeps them, light_pending()
+//     lights the batch into raster::Vertex; glRasterPos in spec mode: vertex(), one;
 //   - a large draw on the general path: arrays_to_vertices(), into verts_, on the threads;
 //   - the triangle-list path: arrays_to_list() and immediate_to_list() (immediate mode's
 //     vertices kept for the list), into raster::ListVertices, on the threads.
@@ -13,8 +14,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
+#include "lighting/lighting_simd.h"
 #include "state/client_arrays.h"
 #include "state/context.h"
 #include "state/float_matrix.h"
@@ -24,6 +27,7 @@ namespace ffc::state {
 namespace {
 constexpr int kBatch = 64;                // vertices per call of the lighting kernel
 constexpr GLint kParallelStage = 2048;   // below this one thread runs the stage for a whole draw
+constexpr size_t kPendingBatch = 4 * kBatch;  // vertices kept before the stage runs on them
 }  // namespace
 
 void Context::update_vertex_constants() {
@@ -61,6 +65,22 @@ struct StageOut {
   double fog[N];                // |eye z|, where fog reads it
   lighting::Lit<T> lit[N];      // lighting on: both faces' colours
   glm::dvec4 unlit[N];          // lighting off: the colour clamped
+  const lighting::Lit<T>& lit_at(int j) const { return lit[j]; }
+};
+// The float stage lights columns (lighting_simd.h): its colours stay in columns, padded.
+template <int N>
+struct StageOut<float, N> {
+  glm::vec4 clip[N];
+  double fog[N];
+  glm::dvec4 unlit[N];
+  alignas(64) float lit[16][lighting::kSoaPad];  // [primary front, back, secondary front, back][r, g, b, a]
+  glm::vec4 colour(int which, int j) const { return {lit[4 * which][j], lit[4 * which + 1][j], lit[4 * which + 2][j], lit[4 * which + 3][j]}; }
+  lighting::Lit<float> lit_at(int j) const { return {{colour(0, j), colour(1, j)}, {colour(2, j), colour(3, j)}}; }
+  lighting::SoaOut columns() {
+    lighting::SoaOut o;
+    for (int k = 0; k < 16; ++k) o.col[k >> 3][k >> 2 & 1][k & 3] = lit[k];
+    return o;
+  }
 };
 
 // The stage for one draw: the constants it reads, taken from the context once (after
@@ -86,19 +106,26 @@ class VertexStage {
   template <int N, class Fetch>
   void run(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal, V4* clip = nullptr) const {
     if (!clip) clip = out.clip;
+    if constexpr (std::is_same_v<T, float>) run_columns(fetch, first, m, out, zero_normal, clip);
+    else run_rows(fetch, first, m, out, zero_normal, clip);
+  }
+
+ private:
+  // The double stage (the reference), a vertex at a time.
+  template <int N, class Fetch>
+  void run_rows(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal, V4* clip) const {
     V4 eye[N], color[N];
     V3 normal[N];
     glm::dvec3 raw[N];  // object-space normals, to eye space in a second loop (it vectorizes apart)
     // Locals, not the context's members: the stores to `clip` (floats) could alias those, and
     // the loop would load the matrices again for every vertex.
-    const bool lit = c_.lighting_, at_w = !c_.spec_, need_eye = lit || fog_depth_;
-    M4 to_clip, to_eye;
-    if constexpr (std::is_same_v<T, float>) to_clip = c_.mvp_f_, to_eye = c_.modelview_f_.back().values();
-    else to_clip = c_.projection_.back(), to_eye = c_.modelview_.back();
+    const bool lit = c_.lighting_, at_w = !c_.spec_;
+    const M4 to_clip = c_.projection_.back(), to_eye = c_.modelview_.back();
     for (int j = 0; j < m; ++j) {
       const VertexIn in = fetch(first + j);
       V4& e = eye[j];  // eye space, where the lighting or fog reads it
-      transform(in.obj, to_clip, to_eye, need_eye, clip[j], e);
+      e = to_eye * in.obj;
+      clip[j] = to_clip * e;
       // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
       // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
       // current fog coordinate, which stays 0 here (no glFogCoord).
@@ -119,25 +146,57 @@ class VertexStage {
     const double rescale = rescale_;
     const bool normalize = c_.normalize_;
     for (int j = 0; j < m; ++j) normal[j] = V3(eye_normal(raw[j], inv, normalize, rescale, zero_normal));
-    if (!lit) return;
-    if constexpr (std::is_same_v<T, float>) c_.kernel_f_(c_.prepared_f_, eye, normal, color, size_t(m), out.lit);
-    else c_.kernel_d_(c_.prepared_d_, eye, normal, color, size_t(m), out.lit);
+    c_.kernel_d_(c_.prepared_d_, eye, normal, color, size_t(m), out.lit);
   }
 
- private:
-  // Eye and clip position: in float as Mesa computes them (clip from the MVP; the eye position
-  // only where it is read), or in double (clip from the eye position).
-  static void transform(const glm::dvec4& obj, const M4& to_clip, const M4& to_eye, bool need_eye, V4& clip, V4& eye) {
-    if constexpr (std::is_same_v<T, float>) {
-      const glm::vec4 of(obj);
-      clip = fmat::transform(to_clip, of);
-      eye = need_eye ? fmat::transform(to_eye, of) : glm::vec4(0);
-    } else {
-      eye = to_eye * obj;
-      clip = to_clip * eye;
+  // The float stage on columns, a vector of vertices at a time (vertex_stage_simd.cpp and
+  // lighting_simd.cpp): the fetch one vertex at a time (the arrays' types vary), then the
+  // transforms, the normals and the lighting on every lane at once. The lanes past m are padding:
+  // the origin with normal (0, 0, 1).
+  template <int N, class Fetch>
+  void run_columns(const Fetch& fetch, GLint first, int m, StageOut<float, N>& out, bool* zero_normal,
+                   glm::vec4* clip) const {
+    constexpr size_t P = lighting::kSoaPad;
+    static_assert(N <= int(P));
+    alignas(64) float obj[4][P], color[4][P], eye[4][P], normal[3][P];
+    alignas(64) double raw[3][P];
+    const bool lit = c_.lighting_, need_eye = lit || fog_depth_;
+    const size_t lanes = lighting::soa_lanes();
+    const size_t padded = std::min(P, (size_t(m) + lanes - 1) / lanes * lanes);
+    for (int j = 0; j < m; ++j) {
+      const VertexIn in = fetch(first + j);
+      for (int k = 0; k < 4; ++k) obj[k][j] = float(in.obj[k]);
+      if (!lit) {
+        // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = !(in.color[k] < 1) ? 1.0 : in.color[k] > 0 ? in.color[k] : 0.0;
+        continue;
+      }
+      for (int k = 0; k < 4; ++k) color[k][j] = float(in.color[k]);
+      for (int k = 0; k < 3; ++k) raw[k][j] = in.normal[k];
     }
+    for (size_t j = size_t(m); j < padded; ++j) {
+      obj[0][j] = obj[1][j] = obj[2][j] = 0, obj[3][j] = 1;
+      color[0][j] = color[1][j] = color[2][j] = color[3][j] = 0;
+      raw[0][j] = raw[1][j] = 0, raw[2][j] = 1;
+    }
+    float* const eye_cols[4] = {eye[0], eye[1], eye[2], eye[3]};
+    const float* const obj_cols[4] = {obj[0], obj[1], obj[2], obj[3]};
+    const glm::mat4 to_eye = c_.modelview_f_.back().values();
+    transform_columns(c_.mvp_f_, need_eye ? &to_eye : nullptr, obj_cols, size_t(m), clip, eye_cols);
+    // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
+    // GL_FRAGMENT_DEPTH; see run_rows().
+    if (fog_depth_)
+      for (int j = 0; j < m; ++j) out.fog[j] = std::abs(double(eye[2][j]));
+    if (!lit) return;
+    // GL 2.1 lights the vertex at (x/w, y/w, z/w); Mesa takes x, y, z as they are (see run_rows()).
+    if (!c_.spec_) std::fill(eye[3], eye[3] + padded, 1.0f);
+    const double* const raw_cols[3] = {raw[0], raw[1], raw[2]};
+    float* const normal_cols[3] = {normal[0], normal[1], normal[2]};
+    if (eye_normal_columns(inv_, c_.normalize_, rescale_, raw_cols, size_t(m), normal_cols)) *zero_normal = true;
+    const lighting::SoaIn in{{eye[0], eye[1], eye[2], eye[3]}, {normal[0], normal[1], normal[2]},
+                             {color[0], color[1], color[2], color[3]}};
+    lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns());
   }
-
   // An object-space normal to eye space: a row vector times M^-1 (the inverse transpose), then
   // normalized (a zero normal stays zero, ambient and emission only, and is reported) or rescaled,
   // in double as glm computes them.
@@ -173,7 +232,7 @@ raster::Vertex general_vertex(const StageOut<T, N>& out, int j, bool lit, bool f
     v.front_sec = v.back_sec = glm::dvec4(0);
     return v;
   }
-  const lighting::Lit<T>& l = out.lit[j];
+  const lighting::Lit<T> l = out.lit_at(j);
   v.front = l.primary[0], v.back = l.primary[1];
   v.front_sec = l.secondary[0], v.back_sec = l.secondary[1];
   return v;
@@ -198,19 +257,78 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
 }
 
 void Context::process_vertex(const glm::dvec4& obj) {
-  if (immediate_list_) {  // lit with the others at glEnd; only what the lighting reads is kept
-    list_pos_.push_back(glm::vec4(obj));  // the float path rounds positions so anyway
-    if (lighting_) list_normal_.push_back(normal_);
-    if (!lighting_ || color_material_) list_color_.push_back(color_);
+  if (immediate_list_) {  // lit with the others at glEnd
+    keep_list_vertex(obj);
     return;
   }
-  update_vertex_constants();
-  bool zero_normal = false;
-  verts_.push_back(vertex(obj, normal_, color_, &zero_normal));
-  if (zero_normal) deviations_.insert(kZeroNormal);
+  // Kept for the batch: a store here, the stage later for many vertices at once. A vertex equal
+  // to the one before (position, normal and colour, bit for bit) under the same state is the same
+  // lit vertex, so it shares that one's entry.
+  const VertexIn in{obj, normal_, color_};
+  if (pending_in_.empty() || std::memcmp(&pending_in_.back(), &in, sizeof in) != 0) {
+    if (pending_in_.size() == kPendingBatch) light_pending();
+    pending_in_.push_back(in);
+  }
+  pending_slot_.push_back(uint32_t(pending_in_.size() - 1));
+  verts_.emplace_back();
   const bool finite = std::isfinite(obj.x) && std::isfinite(obj.y) && std::isfinite(obj.z) && std::isfinite(obj.w) &&
                       (!lighting_ || (std::isfinite(normal_.x) && std::isfinite(normal_.y) && std::isfinite(normal_.z)));
   if (!finite) deviations_.insert(kNonfiniteVertex);
+}
+
+// Immediate mode's GL_TRIANGLES: the vertex kept for the list, only what the lighting reads (the
+// position rounded to float, as the float path rounds it anyway). Returns whether it repeats an
+// entry kept before, whose lit colours it then shares (the state cannot change the lighting
+// between the two inside glBegin/glEnd, but for glMaterial, which leaves the list).
+bool Context::keep_list_vertex(const glm::dvec4& obj) {
+  const glm::vec4 pos(obj);
+  const bool normal = lighting_, color = !lighting_ || color_material_;
+  uint64_t words[2 + 3 + 4] = {};
+  std::memcpy(words, &pos, sizeof pos);
+  if (normal) std::memcpy(words + 2, &normal_, sizeof normal_);
+  if (color) std::memcpy(words + 5, &color_, sizeof color_);
+  uint64_t h = 0;
+  for (const uint64_t w : words) h = (h ^ w) * 0x9E3779B97F4A7C15ull;
+  uint32_t& seen = list_seen_[h >> 54];
+  if (seen != 0 && seen <= list_pos_.size()) {
+    const size_t e = seen - 1;
+    if (std::memcmp(&list_pos_[e], &pos, sizeof pos) == 0 &&
+        (!normal || std::memcmp(&list_normal_[e], &normal_, sizeof normal_) == 0) &&
+        (!color || std::memcmp(&list_color_[e], &color_, sizeof color_) == 0)) {
+      list_corner_.push_back(uint32_t(e));
+      return true;
+    }
+  }
+  list_pos_.push_back(pos);
+  if (normal) list_normal_.push_back(normal_);
+  if (color) list_color_.push_back(color_);
+  seen = uint32_t(list_pos_.size());
+  list_corner_.push_back(seen - 1);
+  return false;
+}
+
+void Context::light_pending() {
+  if (pending_slot_.empty()) return;
+  update_vertex_constants();
+  const size_t base = verts_.size() - pending_slot_.size();
+  const auto fetch = [this](GLint i) { return pending_in_[size_t(i)]; };
+  bool zero_normal = false;
+  auto batches = [&](auto stage) {
+    using T = typename decltype(stage)::Scalar;
+    StageOut<T, kBatch> out;
+    size_t slot = 0;
+    for (size_t b = 0; b < pending_in_.size(); b += kBatch) {
+      const int m = int(std::min<size_t>(kBatch, pending_in_.size() - b));
+      stage.run(fetch, GLint(b), m, out, &zero_normal);
+      for (; slot < pending_slot_.size() && pending_slot_[slot] < b + size_t(m); ++slot)
+        verts_[base + slot] = general_vertex(out, int(pending_slot_[slot] - b), lighting_, stage.fog_depth());
+    }
+  };
+  if (precision_ == Precision::Float) batches(VertexStage<float>(*this));
+  else batches(VertexStage<double>(*this));
+  if (zero_normal) deviations_.insert(kZeroNormal);
+  // The slots lit, the batch starts again; a vertex sent next is never merged with one lit here.
+  pending_in_.clear(), pending_slot_.clear();
 }
 
 // Array element i as the stage takes it: each attribute from its array when enabled, else the
@@ -286,11 +404,10 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
           out.hot[o].color = glm::vec4(s.unlit[j]);
           continue;
         }
-        const lighting::Lit<float>& l = s.lit[j];
-        out.hot[o].color = l.primary[0];
-        if (!out.back.empty()) out.back[o] = l.primary[1];
-        if (!out.front_sec.empty()) out.front_sec[o] = l.secondary[0];
-        if (!out.back_sec.empty()) out.back_sec[o] = l.secondary[1];
+        out.hot[o].color = s.colour(0, j);
+        if (!out.back.empty()) out.back[o] = s.colour(1, j);
+        if (!out.front_sec.empty()) out.front_sec[o] = s.colour(2, j);
+        if (!out.back_sec.empty()) out.back_sec[o] = s.colour(3, j);
       }
       raster::map_list_vertices(out, at, size_t(m), rs);
     }
