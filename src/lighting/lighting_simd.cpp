@@ -64,8 +64,12 @@ HWY_INLINE V PowLanes(D d, V base, float e, M active) {
   hn::Store(base, d, b);
   hn::StoreMaskBits(d, active, bits);
   const size_t n = hn::Lanes(d);
+  // A base of 0 (N.H <= 0 through max(0, x), the cone's edge at 90 degrees) or 1 is its own
+  // power for e > 0: pow is not called for it. (A NaN exponent passes Mesa's range test, and
+  // pow(0, NaN) is NaN: those go through pow.)
+  const bool positive = e > 0;
   for (size_t i = 0; i < n; ++i)
-    if (bits[i / 8] >> (i % 8) & 1) b[i] = std::pow(b[i], e);
+    if ((bits[i / 8] >> (i % 8) & 1) && !(positive && (b[i] == 0 || b[i] == 1))) b[i] = std::pow(b[i], e);
   return hn::Load(d, b);
 }
 
@@ -84,7 +88,9 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
   {
     const V w = hn::LoadU(d, in.p[3] + i);
     const M divide = hn::Not(hn::Or(hn::Eq(w, zero), hn::Eq(w, one)));  // w != 0 && w != 1
-    p = Select(divide, V3s{hn::Div(p.x, w), hn::Div(p.y, w), hn::Div(p.z, w)}, p);
+    // Only where a lane divides: three vector divisions cost as much as the rest of a directional
+    // light's vector, and outside spec mode the stage sets w to 1 before the lighting.
+    if (!hn::AllFalse(d, divide)) p = Select(divide, V3s{hn::Div(p.x, w), hn::Div(p.y, w), hn::Div(p.z, w)}, p);
   }
   const V3s n{hn::LoadU(d, in.n[0] + i), hn::LoadU(d, in.n[1] + i), hn::LoadU(d, in.n[2] + i)};
   V3s cm{zero, zero, zero};

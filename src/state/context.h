@@ -306,6 +306,7 @@ class Context {
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
                         bool* zero_normal) const;  // one vertex through the stage
   VertexIn array_vertex(GLint i) const;
+  bool float_arrays() const;  // every array array_vertex reads holds GL_FLOAT
   template <class Batches>
   void run_stage(GLint first, GLint count, const Batches& batches);
   void arrays_to_vertices(GLint first, GLint count);  // the general path's large draws, into verts_
@@ -317,7 +318,7 @@ class Context {
   // array elements [first, first + count) lit into list_vertices_, then drawn from shared vertices.
   bool triangle_list_path(GLenum mode) const;
   template <class Fetch>
-  void stage_to_list(const Fetch& fetch, GLint first, GLint count);
+  void stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays);  // from_arrays: fetch is array_vertex
   void arrays_to_list(GLint first, GLint count);  // array elements [first, first + count)
   void immediate_to_list();                       // immediate mode's vertices kept for the list
   void draw_triangle_list(const uint32_t* indices, size_t triangles);

@@ -93,8 +93,11 @@ class VertexStage {
 
  public:
   using Scalar = T;
-  explicit VertexStage(const Context& c)
+  // from_arrays: fetch(i) is Context::array_vertex(i); where every array it reads holds
+  // GL_FLOAT the float stage reads them straight into its columns (fetch_float_arrays).
+  explicit VertexStage(const Context& c, bool from_arrays = false)
       : c_(c),
+        float_arrays_(from_arrays && c.float_arrays()),
         inv_(c.normal_matrix_),
         rescale_(c.rescale_normal_ ? glm::length(glm::dvec3(inv_[0][2], inv_[1][2], inv_[2][2])) : 0.0),  // M^-1's third row
         fog_depth_(c.fog_ && c.fog_coord_src_ == GL_FRAGMENT_DEPTH) {}
@@ -163,7 +166,8 @@ class VertexStage {
     const bool lit = c_.lighting_, need_eye = lit || fog_depth_;
     const size_t lanes = lighting::soa_lanes();
     const size_t padded = std::min(P, (size_t(m) + lanes - 1) / lanes * lanes);
-    for (int j = 0; j < m; ++j) {
+    if (float_arrays_) fetch_float_arrays(first, m, obj, color, raw, out.unlit);
+    else for (int j = 0; j < m; ++j) {
       const VertexIn in = fetch(first + j);
       for (int k = 0; k < 4; ++k) obj[k][j] = float(in.obj[k]);
       if (!lit) {
@@ -197,6 +201,52 @@ class VertexStage {
                              {color[0], color[1], color[2], color[3]}};
     lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns());
   }
+  // array_vertex(first + j), j in [0, m), into the columns when every array read holds floats:
+  // the values it would give (a float in double, then back to float, is the float), without the
+  // record in double between. Components an array leaves out as array_vertex fills them.
+  template <size_t P>
+  void fetch_float_arrays(GLint first, int m, float (&obj)[4][P], float (&color)[4][P], double (&raw)[3][P],
+                          glm::dvec4* unlit) const {
+    const auto at = [](const uint8_t* p, int k) {
+      float f;
+      std::memcpy(&f, p + 4 * k, 4);
+      return f;
+    };
+    const ClientArray &va = c_.vertex_array_, &na = c_.normal_array_, &ca = c_.color_array_;
+    const int vn = va.size, cn = ca.size;
+    for (int j = 0; j < m; ++j) {
+      const uint8_t* p = element(va, first + j);
+      obj[0][j] = at(p, 0), obj[1][j] = vn > 1 ? at(p, 1) : 0.0f;
+      obj[2][j] = vn > 2 ? at(p, 2) : 0.0f, obj[3][j] = vn > 3 ? at(p, 3) : 1.0f;
+    }
+    const bool lit = c_.lighting_;
+    float current[4];
+    for (int k = 0; k < 4; ++k) current[k] = float(c_.color_[k]);
+    for (int j = 0; j < m; ++j) {
+      double rgba[4];
+      if (ca.enabled) {
+        const uint8_t* p = element(ca, first + j);
+        for (int k = 0; k < 4; ++k) rgba[k] = k < cn ? at(p, k) : 1.0f;
+      } else {
+        for (int k = 0; k < 4; ++k) rgba[k] = c_.color_[k];
+      }
+      if (!lit) {  // as run_columns clamps it
+        for (int k = 0; k < 4; ++k) unlit[j][k] = !(rgba[k] < 1) ? 1.0 : rgba[k] > 0 ? rgba[k] : 0.0;
+        continue;
+      }
+      for (int k = 0; k < 4; ++k) color[k][j] = ca.enabled ? float(rgba[k]) : current[k];
+    }
+    if (!lit) return;
+    for (int j = 0; j < m; ++j) {
+      if (na.enabled) {
+        const uint8_t* p = element(na, first + j);
+        for (int k = 0; k < 3; ++k) raw[k][j] = at(p, k);
+      } else {
+        for (int k = 0; k < 3; ++k) raw[k][j] = c_.normal_[k];
+      }
+    }
+  }
+
   // An object-space normal to eye space: a row vector times M^-1 (the inverse transpose), then
   // normalized (a zero normal stays zero, ambient and emission only, and is reported) or rescaled,
   // in double as glm computes them.
@@ -214,6 +264,7 @@ class VertexStage {
   }
 
   const Context& c_;
+  const bool float_arrays_;
   const glm::dmat3 inv_;
   const double rescale_;  // 0: no rescale
   const bool fog_depth_;
@@ -287,8 +338,14 @@ bool Context::keep_list_vertex(const glm::dvec4& obj) {
   std::memcpy(words, &pos, sizeof pos);
   if (normal) std::memcpy(words + 2, &normal_, sizeof normal_);
   if (color) std::memcpy(words + 5, &color_, sizeof color_);
+  // The words' products are independent (a chain of multiplies, each waiting for the one before,
+  // cost as much as a quarter of immediate mode's frame); one more mix spreads them to the top bits.
+  static constexpr uint64_t kOdd[9] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull,
+                                       0xD6E8FEB86659FD93ull, 0xFF51AFD7ED558CCDull, 0xC4CEB9FE1A85EC53ull,
+                                       0x94D049BB133111EBull, 0xBF58476D1CE4E5B9ull, 0x2545F4914F6CDD1Dull};
   uint64_t h = 0;
-  for (const uint64_t w : words) h = (h ^ w) * 0x9E3779B97F4A7C15ull;
+  for (int k = 0; k < 9; ++k) h += words[k] * kOdd[k];
+  h = (h ^ h >> 31) * kOdd[0];
   uint32_t& seen = list_seen_[h >> 54];
   if (seen != 0 && seen <= list_pos_.size()) {
     const size_t e = seen - 1;
@@ -344,6 +401,12 @@ void Context::light_pending() {
   return v;
 }
 
+// Whether array_vertex reads only GL_FLOAT arrays (the float stage's direct fetch).
+bool Context::float_arrays() const {
+  return vertex_array_.type == GL_FLOAT && (!color_array_.enabled || color_array_.type == GL_FLOAT) &&
+         (!lighting_ || !normal_array_.enabled || normal_array_.type == GL_FLOAT);
+}
+
 // Vertices [first, first + count) in batches, batch(lo, hi, zero_normal) for each share of the
 // range: on one thread below kParallelStage vertices, else in more shares than threads (a late
 // thread's share is taken by another). The vertices are independent, so the split changes nothing.
@@ -378,7 +441,7 @@ void Context::arrays_to_vertices(GLint first, GLint count) {
     }
   };
   if (precision_ == Precision::Float)
-    run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<float>(*this), lo, hi, zero); });
+    run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<float>(*this, true), lo, hi, zero); });
   else
     run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<double>(*this), lo, hi, zero); });
 }
@@ -386,13 +449,15 @@ void Context::arrays_to_vertices(GLint first, GLint count) {
 // The triangle-list path's vertices (float): count vertices, vertex o from fetch(first + o), lit
 // into list_vertices_ and mapped to the window.
 template <class Fetch>
-void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
+void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays) {
   update_vertex_constants();
   const raster::State rs = raster_state();
   raster::ListVertices& out = list_vertices_;
   out.resize(size_t(count), rs.two_side, rs.add_secondary);
+  // Read once: the stores below could alias the vectors' sizes, which would be loaded per vertex.
+  const bool back = !out.back.empty(), front_sec = !out.front_sec.empty(), back_sec = !out.back_sec.empty();
   run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) {
-    const VertexStage<float> stage(*this);
+    const VertexStage<float> stage(*this, from_arrays);
     StageOut<float, kBatch> s;
     for (GLint b = lo; b < hi; b += kBatch) {
       const int m = int(std::min<GLint>(kBatch, hi - b));
@@ -405,9 +470,9 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
           continue;
         }
         out.hot[o].color = s.colour(0, j);
-        if (!out.back.empty()) out.back[o] = s.colour(1, j);
-        if (!out.front_sec.empty()) out.front_sec[o] = s.colour(2, j);
-        if (!out.back_sec.empty()) out.back_sec[o] = s.colour(3, j);
+        if (back) out.back[o] = s.colour(1, j);
+        if (front_sec) out.front_sec[o] = s.colour(2, j);
+        if (back_sec) out.back_sec[o] = s.colour(3, j);
       }
       raster::map_list_vertices(out, at, size_t(m), rs);
     }
@@ -415,7 +480,7 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
 }
 
 void Context::arrays_to_list(GLint first, GLint count) {
-  stage_to_list([this](GLint i) { return array_vertex(i); }, first, count);
+  stage_to_list([this](GLint i) { return array_vertex(i); }, first, count, true);
 }
 
 // Immediate mode's kept vertices (process_vertex), as they were at each glVertex: what was not
@@ -427,7 +492,7 @@ void Context::immediate_to_list() {
         return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
                         list_color_.empty() ? color_ : list_color_[k]};
       },
-      0, GLint(list_pos_.size()));
+      0, GLint(list_pos_.size()), false);
 }
 
 }  // namespace ffc::state
