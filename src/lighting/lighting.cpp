@@ -9,8 +9,7 @@ namespace ffc::lighting {
 
 namespace {
 
-constexpr unsigned kAmbient = 0x1200, kDiffuse = 0x1201, kSpecular = 0x1202, kEmission = 0x1600,
-                   kAmbientAndDiffuse = 0x1602;
+constexpr unsigned kAmbient = 0x1200, kDiffuse = 0x1201, kSpecular = 0x1202, kEmission = 0x1600;
 
 template <typename T>
 V3<T> rgb(const glm::dvec4& c) {
@@ -25,10 +24,6 @@ template <typename T>
   V4<T> r;
   for (int k = 0; k < 4; ++k) r[k] = !(v[k] < T(1)) ? T(1) : v[k] > T(0) ? v[k] : T(0);
   return r;
-}
-
-bool tracks(const ModelParams& m, unsigned what) {
-  return m.cm_mode == what || (m.cm_mode == kAmbientAndDiffuse && (what == kAmbient || what == kDiffuse));
 }
 
 }  // namespace

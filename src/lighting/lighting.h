@@ -39,6 +39,13 @@ struct ModelParams {  // glLightModel and glColorMaterial
   unsigned cm_mode = 0x1602; // GL_AMBIENT_AND_DIFFUSE
 };
 
+// Whether colour material makes the per-vertex colour stand for the material's `what` (GL_AMBIENT,
+// GL_DIFFUSE, GL_SPECULAR or GL_EMISSION).
+inline bool tracks(const ModelParams& m, unsigned what) {
+  constexpr unsigned kAmbient = 0x1200, kDiffuse = 0x1201, kAmbientAndDiffuse = 0x1602;
+  return m.cm_mode == what || (m.cm_mode == kAmbientAndDiffuse && (what == kAmbient || what == kDiffuse));
+}
+
 // Per-light constants in T, for the lights that are on, packed.
 template <typename T>
 struct PreparedLight {

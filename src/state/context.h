@@ -23,12 +23,12 @@
 #include "state/float_matrix.h"
 #include "state/selection.h"
 #include "state/fragment.h"
+#include "state/vertex_stage.h"
 #include "raster/raster.h"
 #include "raster/triangle_list.h"
 
 namespace ffc::state {
 
-struct VertexIn;  // vertex_stage.h
 enum class Precision { Float, Double };
 
 inline constexpr const char* kClipTempsUnwritten =
@@ -291,8 +291,13 @@ class Context {
   // Integer normals and colours: as Mesa's draws and its glArrayElement convert them, or GL 2.1's rule.
   Fixed draw_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::Gl42; }
   Fixed element_fixed() const { return spec_ ? Fixed::Gl21 : Fixed::MesaCall; }
-  // The vertex stage (vertex_stage.cpp): one vertex now, or kept for the triangle list.
+  // The vertex stage (vertex_stage.cpp): a vertex kept for its batch (its place in verts_ taken
+  // now, lit by light_pending) or for the triangle list.
   void process_vertex(const glm::dvec4& obj);
+  // The kept vertices lit into their places in verts_: before anything reads verts_ (assembly,
+  // Mesa's vbo wrap) and before anything the stage reads changes (a colour that changes the
+  // lighting key, a material inside glBegin/glEnd, spec mode's colour material).
+  void light_pending();
   glm::dvec4 mesa_raster_color(const float obj[4]);  // raster_pos.cpp
   void raster_pos_spec(double x, double y, double z, double w);
   void set_raster_pos(double x, double y, double z, double w);  // glRasterPos but for selection
@@ -301,6 +306,7 @@ class Context {
   raster::Vertex vertex(const glm::dvec4& obj, const glm::dvec3& normal, const glm::dvec4& color,
                         bool* zero_normal) const;  // one vertex through the stage
   VertexIn array_vertex(GLint i) const;
+  bool float_arrays() const;  // every array array_vertex reads holds GL_FLOAT
   template <class Batches>
   void run_stage(GLint first, GLint count, const Batches& batches);
   void arrays_to_vertices(GLint first, GLint count);  // the general path's large draws, into verts_
@@ -312,7 +318,7 @@ class Context {
   // array elements [first, first + count) lit into list_vertices_, then drawn from shared vertices.
   bool triangle_list_path(GLenum mode) const;
   template <class Fetch>
-  void stage_to_list(const Fetch& fetch, GLint first, GLint count);
+  void stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays);  // from_arrays: fetch is array_vertex
   void arrays_to_list(GLint first, GLint count);  // array elements [first, first + count)
   void immediate_to_list();                       // immediate mode's vertices kept for the list
   void draw_triangle_list(const uint32_t* indices, size_t triangles);
@@ -444,6 +450,11 @@ class Context {
   GLenum prim_mode_ = 0;
   bool in_begin_ = false;
   std::vector<raster::Vertex> verts_;
+  // The batch process_vertex keeps: the last pending_slot_.size() entries of verts_ wait for
+  // their colours; slot k takes pending_in_[pending_slot_[k]] (identical consecutive vertices
+  // share one entry, lit once).
+  std::vector<VertexIn> pending_in_;
+  std::vector<uint32_t> pending_slot_;
   std::vector<uint32_t> elements_;            // glDrawElements: indices into verts_
   std::vector<raster::Triangle> triangles_;   // set up, waiting for the rasterizer
   std::vector<std::vector<raster::Triangle>> tri_parts_;  // the other threads' shares of a draw
@@ -456,9 +467,15 @@ class Context {
   raster::ListVertices list_vertices_;
   bool triangle_lists_ = true;
   bool immediate_list_ = false;  // glBegin(GL_TRIANGLES) on the list: vertices kept as sent, lit at glEnd
+  // One entry per distinct vertex sent (position, and the normal and colour where the lighting
+  // reads them); list_corner_ names each glVertex's entry, the triangles' indices. A vertex equal
+  // to a recent one (found through list_seen_, by a hash of its values) is that entry again: lit once.
   std::vector<glm::vec4> list_pos_;
   std::vector<glm::dvec3> list_normal_;
   std::vector<glm::dvec4> list_color_;
+  std::vector<uint32_t> list_corner_;
+  std::array<uint32_t, 1024> list_seen_{};  // entry + 1 by hash; checked against the values before use
+  bool keep_list_vertex(const glm::dvec4& obj);  // false: a new entry
   raster::TriangleBins bins_;
 
   // The current raster position (glRasterPos): window position and clip w, its colour.

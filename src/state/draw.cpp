@@ -68,6 +68,7 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   else
     for (GLint i = first; i < first + count; ++i) fetch_vertex(i, draw_fixed());
   restore(kept);
+  light_pending();
   flush_primitive();
 }
 
@@ -118,6 +119,7 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
     else
       for (uint32_t i = lo; i <= hi; ++i) fetch_vertex(GLint(i), draw_fixed());
     restore(kept);
+    light_pending();
     for (uint32_t& e : elements_) e -= lo;
   }
   flush_primitive();

@@ -1,6 +1,7 @@
 // Immediate mode (GL 2.1 section 2.6): glBegin / glVertex / glEnd and the current normal and
-// colour. GL_TRIANGLES while rendering in float keeps the vertices as sent and lights them
-// together at glEnd on the triangle-list path; every other primitive goes vertex by vertex.
+// colour. A glVertex is a store: GL_TRIANGLES while rendering in float keeps the vertices as sent
+// (a repeated one shared) and lights them together at glEnd on the triangle-list path; every
+// other primitive keeps them in a batch lit before anything reads them (light_pending).
 #include <algorithm>
 
 #include "state/context.h"
@@ -17,6 +18,9 @@ void Context::Normal(double x, double y, double z) {
 }
 
 void Context::Color(double r, double g, double b, double a, int components) {
+  // A colour that changes what the stage reads (the key's colour material below, spec mode's
+  // tracked material) comes after the kept vertices are lit.
+  if (spec_ || (in_begin_ && !color_varies_)) light_pending();
   // glColor3 sets alpha to 1 (GL 2.1 section 2.7). Mesa's vbo keeps the colour attribute's size and
   // active size between flushes: a glColor3 that shrinks the active size fills alpha with 1, but
   // one at active size 3 in an attribute of size 4 (glColor4, glColor3, glColor4 since the last
@@ -53,7 +57,8 @@ void Context::Color(double r, double g, double b, double a, int components) {
 // count (an even number of triangles drawn keeps the strip's winding), or every vertex before its
 // first whole primitive. A line loop's wrap is named, not modelled (kLineLoopWrap).
 void Context::vbo_wrap(bool alpha_one) {
-  const size_t n = immediate_list_ ? list_pos_.size() : verts_.size();
+  light_pending();
+  const size_t n = immediate_list_ ? list_corner_.size() : verts_.size();
   if (n == 0) return;
   size_t keep = 0;
   bool shared = false;  // the kept vertices belong to primitives already drawn too
@@ -72,7 +77,14 @@ void Context::vbo_wrap(bool alpha_one) {
   }
   if (immediate_list_) {  // GL_TRIANGLES: the unfinished triangle's colours, lit at glEnd
     if (alpha_one && !list_color_.empty())
-      for (size_t i = n - keep; i < n; ++i) list_color_[i].a = 1;
+      for (size_t i = n - keep; i < n; ++i) {
+        // The corner's own entry, alpha 1: one it shared with an earlier corner keeps its alpha.
+        const uint32_t e = list_corner_[i];
+        list_pos_.push_back(list_pos_[e]);
+        if (!list_normal_.empty()) list_normal_.push_back(list_normal_[e]);
+        list_color_.push_back(glm::dvec4(glm::dvec3(list_color_[e]), 1));
+        list_corner_[i] = uint32_t(list_pos_.size() - 1);
+      }
     return;
   }
   std::vector<raster::Vertex> kept;
@@ -150,21 +162,24 @@ void Context::Begin(GLenum mode) {
   // lit together at glEnd, unless a glMaterial between them changes the lighting
   // (leave_triangle_list()).
   immediate_list_ = triangle_list_path(mode);
-  list_pos_.clear(), list_normal_.clear(), list_color_.clear();
+  list_pos_.clear(), list_normal_.clear(), list_color_.clear(), list_corner_.clear();
 }
 
+// Also lights the vertices kept for the batch: the caller is about to change what they read.
 void Context::leave_triangle_list() {
-  if (!immediate_list_) return;
-  immediate_list_ = false;
-  for (size_t i = 0; i < list_pos_.size(); ++i) {
-    const glm::dvec3 normal = normal_;
-    const glm::dvec4 color = color_;
-    // As they were at that glVertex (what was not kept is not read).
-    if (!list_normal_.empty()) normal_ = list_normal_[i];
-    if (!list_color_.empty()) color_ = list_color_[i];
-    process_vertex(glm::dvec4(list_pos_[i]));
-    normal_ = normal, color_ = color;
+  if (immediate_list_) {
+    immediate_list_ = false;
+    for (const uint32_t e : list_corner_) {
+      const glm::dvec3 normal = normal_;
+      const glm::dvec4 color = color_;
+      // As they were at that glVertex (what was not kept is not read).
+      if (!list_normal_.empty()) normal_ = list_normal_[e];
+      if (!list_color_.empty()) color_ = list_color_[e];
+      process_vertex(glm::dvec4(list_pos_[e]));
+      normal_ = normal, color_ = color;
+    }
   }
+  light_pending();
 }
 
 void Context::End() {
@@ -172,12 +187,13 @@ void Context::End() {
   in_begin_ = false;
   if (sink_draws()) return sink_end(), flush_stored_keeping_format();  // draw_sink.cpp
   if (!immediate_list_) {
+    light_pending();
     flush_primitive();
     return flush_stored_keeping_format();
   }
   immediate_list_ = false;
   immediate_to_list();
-  draw_triangle_list(nullptr, list_pos_.size() / 3);
+  draw_triangle_list(list_corner_.data(), list_corner_.size() / 3);
   flush_stored_keeping_format();
 }
 }  // namespace ffc::state

@@ -1,9 +1,10 @@
 // The vertex stage, written once (GL 2.1 sections 2.11 to 2.14; what Mesa's ffvertex_prog.c
 // builds): fetch, transform to eye and clip space, the normal to eye space (normalized or
 // rescaled), lighting through the kernel chosen by the lighting key, or the colour clamped.
-// Every path runs it, in batches of up to kBatch vertices:
-//   - one vertex at a time (glVertex, glArrayElement, small draws, glRasterPos in spec mode):
-//     vertex() and process_vertex(), into raster::Vertex;
+// Every path runs it, in batches of up to kBatch vertices (float: on columns, a vector of vertices
+// at a time, vertex_stage_simd.cpp and lighting/lighting_simd.cpp):
+//   - glVertex, glArrayElement and small draws: process_vertex() keeps them, light_pending()
+//     lights the batch into raster::Vertex; glRasterPos in spec mode: vertex(), one;
 //   - a large draw on the general path: arrays_to_vertices(), into verts_, on the threads;
 //   - the triangle-list path: arrays_to_list() and immediate_to_list() (immediate mode's
 //     vertices kept for the list), into raster::ListVertices, on the threads.
@@ -13,8 +14,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
+#include "lighting/lighting_simd.h"
 #include "state/client_arrays.h"
 #include "state/context.h"
 #include "state/float_matrix.h"
@@ -24,6 +27,7 @@ namespace ffc::state {
 namespace {
 constexpr int kBatch = 64;                // vertices per call of the lighting kernel
 constexpr GLint kParallelStage = 2048;   // below this one thread runs the stage for a whole draw
+constexpr size_t kPendingBatch = 4 * kBatch;  // vertices kept before the stage runs on them
 }  // namespace
 
 void Context::update_vertex_constants() {
@@ -61,6 +65,22 @@ struct StageOut {
   double fog[N];                // |eye z|, where fog reads it
   lighting::Lit<T> lit[N];      // lighting on: both faces' colours
   glm::dvec4 unlit[N];          // lighting off: the colour clamped
+  const lighting::Lit<T>& lit_at(int j) const { return lit[j]; }
+};
+// The float stage lights columns (lighting_simd.h): its colours stay in columns, padded.
+template <int N>
+struct StageOut<float, N> {
+  glm::vec4 clip[N];
+  double fog[N];
+  glm::dvec4 unlit[N];
+  alignas(64) float lit[16][lighting::kSoaPad];  // [primary front, back, secondary front, back][r, g, b, a]
+  glm::vec4 colour(int which, int j) const { return {lit[4 * which][j], lit[4 * which + 1][j], lit[4 * which + 2][j], lit[4 * which + 3][j]}; }
+  lighting::Lit<float> lit_at(int j) const { return {{colour(0, j), colour(1, j)}, {colour(2, j), colour(3, j)}}; }
+  lighting::SoaOut columns() {
+    lighting::SoaOut o;
+    for (int k = 0; k < 16; ++k) o.col[k >> 3][k >> 2 & 1][k & 3] = lit[k];
+    return o;
+  }
 };
 
 // The stage for one draw: the constants it reads, taken from the context once (after
@@ -73,8 +93,11 @@ class VertexStage {
 
  public:
   using Scalar = T;
-  explicit VertexStage(const Context& c)
+  // from_arrays: fetch(i) is Context::array_vertex(i); where every array it reads holds
+  // GL_FLOAT the float stage reads them straight into its columns (fetch_float_arrays).
+  explicit VertexStage(const Context& c, bool from_arrays = false)
       : c_(c),
+        float_arrays_(from_arrays && c.float_arrays()),
         inv_(c.normal_matrix_),
         rescale_(c.rescale_normal_ ? glm::length(glm::dvec3(inv_[0][2], inv_[1][2], inv_[2][2])) : 0.0),  // M^-1's third row
         fog_depth_(c.fog_ && c.fog_coord_src_ == GL_FRAGMENT_DEPTH) {}
@@ -86,19 +109,26 @@ class VertexStage {
   template <int N, class Fetch>
   void run(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal, V4* clip = nullptr) const {
     if (!clip) clip = out.clip;
+    if constexpr (std::is_same_v<T, float>) run_columns(fetch, first, m, out, zero_normal, clip);
+    else run_rows(fetch, first, m, out, zero_normal, clip);
+  }
+
+ private:
+  // The double stage (the reference), a vertex at a time.
+  template <int N, class Fetch>
+  void run_rows(const Fetch& fetch, GLint first, int m, StageOut<T, N>& out, bool* zero_normal, V4* clip) const {
     V4 eye[N], color[N];
     V3 normal[N];
     glm::dvec3 raw[N];  // object-space normals, to eye space in a second loop (it vectorizes apart)
     // Locals, not the context's members: the stores to `clip` (floats) could alias those, and
     // the loop would load the matrices again for every vertex.
-    const bool lit = c_.lighting_, at_w = !c_.spec_, need_eye = lit || fog_depth_;
-    M4 to_clip, to_eye;
-    if constexpr (std::is_same_v<T, float>) to_clip = c_.mvp_f_, to_eye = c_.modelview_f_.back().values();
-    else to_clip = c_.projection_.back(), to_eye = c_.modelview_.back();
+    const bool lit = c_.lighting_, at_w = !c_.spec_;
+    const M4 to_clip = c_.projection_.back(), to_eye = c_.modelview_.back();
     for (int j = 0; j < m; ++j) {
       const VertexIn in = fetch(first + j);
       V4& e = eye[j];  // eye space, where the lighting or fog reads it
-      transform(in.obj, to_clip, to_eye, need_eye, clip[j], e);
+      e = to_eye * in.obj;
+      clip[j] = to_clip * e;
       // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
       // GL_FRAGMENT_DEPTH (its default distance mode, eye plane absolute); for GL_FOG_COORD the
       // current fog coordinate, which stays 0 here (no glFogCoord).
@@ -119,22 +149,101 @@ class VertexStage {
     const double rescale = rescale_;
     const bool normalize = c_.normalize_;
     for (int j = 0; j < m; ++j) normal[j] = V3(eye_normal(raw[j], inv, normalize, rescale, zero_normal));
-    if (!lit) return;
-    if constexpr (std::is_same_v<T, float>) c_.kernel_f_(c_.prepared_f_, eye, normal, color, size_t(m), out.lit);
-    else c_.kernel_d_(c_.prepared_d_, eye, normal, color, size_t(m), out.lit);
+    c_.kernel_d_(c_.prepared_d_, eye, normal, color, size_t(m), out.lit);
   }
 
- private:
-  // Eye and clip position: in float as Mesa computes them (clip from the MVP; the eye position
-  // only where it is read), or in double (clip from the eye position).
-  static void transform(const glm::dvec4& obj, const M4& to_clip, const M4& to_eye, bool need_eye, V4& clip, V4& eye) {
-    if constexpr (std::is_same_v<T, float>) {
-      const glm::vec4 of(obj);
-      clip = fmat::transform(to_clip, of);
-      eye = need_eye ? fmat::transform(to_eye, of) : glm::vec4(0);
-    } else {
-      eye = to_eye * obj;
-      clip = to_clip * eye;
+  // The float stage on columns, a vector of vertices at a time (vertex_stage_simd.cpp and
+  // lighting_simd.cpp): the fetch one vertex at a time (the arrays' types vary), then the
+  // transforms, the normals and the lighting on every lane at once. The lanes past m are padding:
+  // the origin with normal (0, 0, 1).
+  template <int N, class Fetch>
+  void run_columns(const Fetch& fetch, GLint first, int m, StageOut<float, N>& out, bool* zero_normal,
+                   glm::vec4* clip) const {
+    constexpr size_t P = lighting::kSoaPad;
+    static_assert(N <= int(P));
+    alignas(64) float obj[4][P], color[4][P], eye[4][P], normal[3][P];
+    alignas(64) double raw[3][P];
+    const bool lit = c_.lighting_, need_eye = lit || fog_depth_;
+    const size_t lanes = lighting::soa_lanes();
+    const size_t padded = std::min(P, (size_t(m) + lanes - 1) / lanes * lanes);
+    if (float_arrays_) fetch_float_arrays(first, m, obj, color, raw, out.unlit);
+    else for (int j = 0; j < m; ++j) {
+      const VertexIn in = fetch(first + j);
+      for (int k = 0; k < 4; ++k) obj[k][j] = float(in.obj[k]);
+      if (!lit) {
+        // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = !(in.color[k] < 1) ? 1.0 : in.color[k] > 0 ? in.color[k] : 0.0;
+        continue;
+      }
+      for (int k = 0; k < 4; ++k) color[k][j] = float(in.color[k]);
+      for (int k = 0; k < 3; ++k) raw[k][j] = in.normal[k];
+    }
+    for (size_t j = size_t(m); j < padded; ++j) {
+      obj[0][j] = obj[1][j] = obj[2][j] = 0, obj[3][j] = 1;
+      color[0][j] = color[1][j] = color[2][j] = color[3][j] = 0;
+      raw[0][j] = raw[1][j] = 0, raw[2][j] = 1;
+    }
+    float* const eye_cols[4] = {eye[0], eye[1], eye[2], eye[3]};
+    const float* const obj_cols[4] = {obj[0], obj[1], obj[2], obj[3]};
+    const glm::mat4 to_eye = c_.modelview_f_.back().values();
+    transform_columns(c_.mvp_f_, need_eye ? &to_eye : nullptr, obj_cols, size_t(m), clip, eye_cols);
+    // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
+    // GL_FRAGMENT_DEPTH; see run_rows().
+    if (fog_depth_)
+      for (int j = 0; j < m; ++j) out.fog[j] = std::abs(double(eye[2][j]));
+    if (!lit) return;
+    // GL 2.1 lights the vertex at (x/w, y/w, z/w); Mesa takes x, y, z as they are (see run_rows()).
+    if (!c_.spec_) std::fill(eye[3], eye[3] + padded, 1.0f);
+    const double* const raw_cols[3] = {raw[0], raw[1], raw[2]};
+    float* const normal_cols[3] = {normal[0], normal[1], normal[2]};
+    if (eye_normal_columns(inv_, c_.normalize_, rescale_, raw_cols, size_t(m), normal_cols)) *zero_normal = true;
+    const lighting::SoaIn in{{eye[0], eye[1], eye[2], eye[3]}, {normal[0], normal[1], normal[2]},
+                             {color[0], color[1], color[2], color[3]}};
+    lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns());
+  }
+  // array_vertex(first + j), j in [0, m), into the columns when every array read holds floats:
+  // the values it would give (a float in double, then back to float, is the float), without the
+  // record in double between. Components an array leaves out as array_vertex fills them.
+  template <size_t P>
+  void fetch_float_arrays(GLint first, int m, float (&obj)[4][P], float (&color)[4][P], double (&raw)[3][P],
+                          glm::dvec4* unlit) const {
+    const auto at = [](const uint8_t* p, int k) {
+      float f;
+      std::memcpy(&f, p + 4 * k, 4);
+      return f;
+    };
+    const ClientArray &va = c_.vertex_array_, &na = c_.normal_array_, &ca = c_.color_array_;
+    const int vn = va.size, cn = ca.size;
+    for (int j = 0; j < m; ++j) {
+      const uint8_t* p = element(va, first + j);
+      obj[0][j] = at(p, 0), obj[1][j] = vn > 1 ? at(p, 1) : 0.0f;
+      obj[2][j] = vn > 2 ? at(p, 2) : 0.0f, obj[3][j] = vn > 3 ? at(p, 3) : 1.0f;
+    }
+    const bool lit = c_.lighting_;
+    float current[4];
+    for (int k = 0; k < 4; ++k) current[k] = float(c_.color_[k]);
+    for (int j = 0; j < m; ++j) {
+      double rgba[4];
+      if (ca.enabled) {
+        const uint8_t* p = element(ca, first + j);
+        for (int k = 0; k < 4; ++k) rgba[k] = k < cn ? at(p, k) : 1.0f;
+      } else {
+        for (int k = 0; k < 4; ++k) rgba[k] = c_.color_[k];
+      }
+      if (!lit) {  // as run_columns clamps it
+        for (int k = 0; k < 4; ++k) unlit[j][k] = !(rgba[k] < 1) ? 1.0 : rgba[k] > 0 ? rgba[k] : 0.0;
+        continue;
+      }
+      for (int k = 0; k < 4; ++k) color[k][j] = ca.enabled ? float(rgba[k]) : current[k];
+    }
+    if (!lit) return;
+    for (int j = 0; j < m; ++j) {
+      if (na.enabled) {
+        const uint8_t* p = element(na, first + j);
+        for (int k = 0; k < 3; ++k) raw[k][j] = at(p, k);
+      } else {
+        for (int k = 0; k < 3; ++k) raw[k][j] = c_.normal_[k];
+      }
     }
   }
 
@@ -155,6 +264,7 @@ class VertexStage {
   }
 
   const Context& c_;
+  const bool float_arrays_;
   const glm::dmat3 inv_;
   const double rescale_;  // 0: no rescale
   const bool fog_depth_;
@@ -173,7 +283,7 @@ raster::Vertex general_vertex(const StageOut<T, N>& out, int j, bool lit, bool f
     v.front_sec = v.back_sec = glm::dvec4(0);
     return v;
   }
-  const lighting::Lit<T>& l = out.lit[j];
+  const lighting::Lit<T> l = out.lit_at(j);
   v.front = l.primary[0], v.back = l.primary[1];
   v.front_sec = l.secondary[0], v.back_sec = l.secondary[1];
   return v;
@@ -198,19 +308,84 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
 }
 
 void Context::process_vertex(const glm::dvec4& obj) {
-  if (immediate_list_) {  // lit with the others at glEnd; only what the lighting reads is kept
-    list_pos_.push_back(glm::vec4(obj));  // the float path rounds positions so anyway
-    if (lighting_) list_normal_.push_back(normal_);
-    if (!lighting_ || color_material_) list_color_.push_back(color_);
+  if (immediate_list_) {  // lit with the others at glEnd
+    keep_list_vertex(obj);
     return;
   }
-  update_vertex_constants();
-  bool zero_normal = false;
-  verts_.push_back(vertex(obj, normal_, color_, &zero_normal));
-  if (zero_normal) deviations_.insert(kZeroNormal);
+  // Kept for the batch: a store here, the stage later for many vertices at once. A vertex equal
+  // to the one before (position, normal and colour, bit for bit) under the same state is the same
+  // lit vertex, so it shares that one's entry.
+  const VertexIn in{obj, normal_, color_};
+  if (pending_in_.empty() || std::memcmp(&pending_in_.back(), &in, sizeof in) != 0) {
+    if (pending_in_.size() == kPendingBatch) light_pending();
+    pending_in_.push_back(in);
+  }
+  pending_slot_.push_back(uint32_t(pending_in_.size() - 1));
+  verts_.emplace_back();
   const bool finite = std::isfinite(obj.x) && std::isfinite(obj.y) && std::isfinite(obj.z) && std::isfinite(obj.w) &&
                       (!lighting_ || (std::isfinite(normal_.x) && std::isfinite(normal_.y) && std::isfinite(normal_.z)));
   if (!finite) deviations_.insert(kNonfiniteVertex);
+}
+
+// Immediate mode's GL_TRIANGLES: the vertex kept for the list, only what the lighting reads (the
+// position rounded to float, as the float path rounds it anyway). Returns whether it repeats an
+// entry kept before, whose lit colours it then shares (the state cannot change the lighting
+// between the two inside glBegin/glEnd, but for glMaterial, which leaves the list).
+bool Context::keep_list_vertex(const glm::dvec4& obj) {
+  const glm::vec4 pos(obj);
+  const bool normal = lighting_, color = !lighting_ || color_material_;
+  uint64_t words[2 + 3 + 4] = {};
+  std::memcpy(words, &pos, sizeof pos);
+  if (normal) std::memcpy(words + 2, &normal_, sizeof normal_);
+  if (color) std::memcpy(words + 5, &color_, sizeof color_);
+  // The words' products are independent (a chain of multiplies, each waiting for the one before,
+  // cost as much as a quarter of immediate mode's frame); one more mix spreads them to the top bits.
+  static constexpr uint64_t kOdd[9] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull,
+                                       0xD6E8FEB86659FD93ull, 0xFF51AFD7ED558CCDull, 0xC4CEB9FE1A85EC53ull,
+                                       0x94D049BB133111EBull, 0xBF58476D1CE4E5B9ull, 0x2545F4914F6CDD1Dull};
+  uint64_t h = 0;
+  for (int k = 0; k < 9; ++k) h += words[k] * kOdd[k];
+  h = (h ^ h >> 31) * kOdd[0];
+  uint32_t& seen = list_seen_[h >> 54];
+  if (seen != 0 && seen <= list_pos_.size()) {
+    const size_t e = seen - 1;
+    if (std::memcmp(&list_pos_[e], &pos, sizeof pos) == 0 &&
+        (!normal || std::memcmp(&list_normal_[e], &normal_, sizeof normal_) == 0) &&
+        (!color || std::memcmp(&list_color_[e], &color_, sizeof color_) == 0)) {
+      list_corner_.push_back(uint32_t(e));
+      return true;
+    }
+  }
+  list_pos_.push_back(pos);
+  if (normal) list_normal_.push_back(normal_);
+  if (color) list_color_.push_back(color_);
+  seen = uint32_t(list_pos_.size());
+  list_corner_.push_back(seen - 1);
+  return false;
+}
+
+void Context::light_pending() {
+  if (pending_slot_.empty()) return;
+  update_vertex_constants();
+  const size_t base = verts_.size() - pending_slot_.size();
+  const auto fetch = [this](GLint i) { return pending_in_[size_t(i)]; };
+  bool zero_normal = false;
+  auto batches = [&](auto stage) {
+    using T = typename decltype(stage)::Scalar;
+    StageOut<T, kBatch> out;
+    size_t slot = 0;
+    for (size_t b = 0; b < pending_in_.size(); b += kBatch) {
+      const int m = int(std::min<size_t>(kBatch, pending_in_.size() - b));
+      stage.run(fetch, GLint(b), m, out, &zero_normal);
+      for (; slot < pending_slot_.size() && pending_slot_[slot] < b + size_t(m); ++slot)
+        verts_[base + slot] = general_vertex(out, int(pending_slot_[slot] - b), lighting_, stage.fog_depth());
+    }
+  };
+  if (precision_ == Precision::Float) batches(VertexStage<float>(*this));
+  else batches(VertexStage<double>(*this));
+  if (zero_normal) deviations_.insert(kZeroNormal);
+  // The slots lit, the batch starts again; a vertex sent next is never merged with one lit here.
+  pending_in_.clear(), pending_slot_.clear();
 }
 
 // Array element i as the stage takes it: each attribute from its array when enabled, else the
@@ -224,6 +399,12 @@ void Context::process_vertex(const glm::dvec4& obj) {
   v.normal = lighting_ && normal_array_.enabled ? glm::dvec3(attribute(normal_array_, i, 3, draw_fixed(), glm::dvec4(0)))
                                                 : normal_;
   return v;
+}
+
+// Whether array_vertex reads only GL_FLOAT arrays (the float stage's direct fetch).
+bool Context::float_arrays() const {
+  return vertex_array_.type == GL_FLOAT && (!color_array_.enabled || color_array_.type == GL_FLOAT) &&
+         (!lighting_ || !normal_array_.enabled || normal_array_.type == GL_FLOAT);
 }
 
 // Vertices [first, first + count) in batches, batch(lo, hi, zero_normal) for each share of the
@@ -260,7 +441,7 @@ void Context::arrays_to_vertices(GLint first, GLint count) {
     }
   };
   if (precision_ == Precision::Float)
-    run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<float>(*this), lo, hi, zero); });
+    run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<float>(*this, true), lo, hi, zero); });
   else
     run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { batches(VertexStage<double>(*this), lo, hi, zero); });
 }
@@ -268,13 +449,15 @@ void Context::arrays_to_vertices(GLint first, GLint count) {
 // The triangle-list path's vertices (float): count vertices, vertex o from fetch(first + o), lit
 // into list_vertices_ and mapped to the window.
 template <class Fetch>
-void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
+void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays) {
   update_vertex_constants();
   const raster::State rs = raster_state();
   raster::ListVertices& out = list_vertices_;
   out.resize(size_t(count), rs.two_side, rs.add_secondary);
+  // Read once: the stores below could alias the vectors' sizes, which would be loaded per vertex.
+  const bool back = !out.back.empty(), front_sec = !out.front_sec.empty(), back_sec = !out.back_sec.empty();
   run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) {
-    const VertexStage<float> stage(*this);
+    const VertexStage<float> stage(*this, from_arrays);
     StageOut<float, kBatch> s;
     for (GLint b = lo; b < hi; b += kBatch) {
       const int m = int(std::min<GLint>(kBatch, hi - b));
@@ -286,11 +469,10 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
           out.hot[o].color = glm::vec4(s.unlit[j]);
           continue;
         }
-        const lighting::Lit<float>& l = s.lit[j];
-        out.hot[o].color = l.primary[0];
-        if (!out.back.empty()) out.back[o] = l.primary[1];
-        if (!out.front_sec.empty()) out.front_sec[o] = l.secondary[0];
-        if (!out.back_sec.empty()) out.back_sec[o] = l.secondary[1];
+        out.hot[o].color = s.colour(0, j);
+        if (back) out.back[o] = s.colour(1, j);
+        if (front_sec) out.front_sec[o] = s.colour(2, j);
+        if (back_sec) out.back_sec[o] = s.colour(3, j);
       }
       raster::map_list_vertices(out, at, size_t(m), rs);
     }
@@ -298,7 +480,7 @@ void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count) {
 }
 
 void Context::arrays_to_list(GLint first, GLint count) {
-  stage_to_list([this](GLint i) { return array_vertex(i); }, first, count);
+  stage_to_list([this](GLint i) { return array_vertex(i); }, first, count, true);
 }
 
 // Immediate mode's kept vertices (process_vertex), as they were at each glVertex: what was not
@@ -310,7 +492,7 @@ void Context::immediate_to_list() {
         return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
                         list_color_.empty() ? color_ : list_color_[k]};
       },
-      0, GLint(list_pos_.size()));
+      0, GLint(list_pos_.size()), false);
 }
 
 }  // namespace ffc::state

@@ -1,6 +1,7 @@
 // The vertex stage's parts that its callers share (not an interface: included by src/state's
 // .cpp files only). The stage itself is vertex_stage.cpp.
 #pragma once
+#include <cstddef>
 #include <glm/glm.hpp>
 
 namespace ffc::state {
@@ -12,5 +13,18 @@ struct VertexIn {
   glm::dvec3 normal;
   glm::dvec4 color;
 };
+
+// The float stage's transforms on columns (vertex_stage_simd.cpp, Highway, the scalar code's bits
+// on every target). Columns are read and written up to `count` rounded up to a multiple of the
+// vector length (lighting::kSoaPad covers every target); `clip` only up to `count`.
+//   transform_columns: clip = to_clip x obj, and eye = *to_eye x obj where to_eye is given, as
+//     fmat::transform computes them;
+//   eye_normal_columns: the object normals times M^-1 as a row vector, normalized (a normal of
+//     length 0 or NaN kept as it is: returns true when one was met) or divided by
+//     `rescale` when it is positive, in double, then rounded to float.
+void transform_columns(const glm::mat4& to_clip, const glm::mat4* to_eye, const float* const obj[4], size_t count,
+                       glm::vec4* clip, float* const eye[4]);
+bool eye_normal_columns(const glm::dmat3& inv, bool normalize, double rescale, const double* const raw[3],
+                        size_t count, float* const out[3]);
 
 }  // namespace ffc::state
