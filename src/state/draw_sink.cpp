@@ -35,10 +35,16 @@ SinkState Context::sink_state() {
   s.point_size = point_size_, s.line_width = line_width_;
   s.fragment = &frag_;
   s.clear_color = clear_color_, s.clear_depth = clear_depth_;
-  if (fog_) s.unsupported.push_back("fog");
+  raster::State rs;
+  fog_raster_state(rs);
+  s.fog = fog_, s.fog_mode = fog_mode_, s.fog_coord_src = fog_coord_src_;
+  s.fog_params = glm::vec4(rs.fog_params[0], rs.fog_params[1], rs.fog_params[2], rs.fog_params[3]);
+  s.fog_color = glm::vec3(fog_color_);
+  s.offset_fill = offset_fill_;
+  s.offset_line = enabled_state(GL_POLYGON_OFFSET_LINE) == 1, s.offset_point = enabled_state(GL_POLYGON_OFFSET_POINT) == 1;
+  s.offset_factor = offset_factor_, s.offset_units = offset_units_;
   if (offset_fill_) s.unsupported.push_back("polygon offset");
   if (unfilled()) s.unsupported.push_back("glPolygonMode other than GL_FILL");
-  if (frag_.alpha_test) s.unsupported.push_back("the alpha test");
   if (frag_.line_stipple) s.unsupported.push_back("line stipple");
   if (precision_ == Precision::Double) s.unsupported.push_back("double precision (the shaders are float)");
   return s;

@@ -45,6 +45,16 @@ struct SinkState {
   const FragmentState* fragment = nullptr;  // scissor, blending, masks, alpha test, stipple
   glm::vec4 clear_color{0};
   double clear_depth = 1;
+  // Fog (state/fog.cpp): the mode, the coordinate's source, Mesa's optimized parameters
+  // (raster::State::fog_params: linear's scale and offset, exp's and exp2's density over ln 2 and
+  // sqrt(ln 2)) and the colour.
+  bool fog = false;
+  GLenum fog_mode = GL_EXP, fog_coord_src = GL_FRAGMENT_DEPTH;
+  glm::vec4 fog_params{0};
+  glm::vec3 fog_color{0};
+  // Polygon offset (glPolygonOffset's values as given; the sink's GL scales the units itself).
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0, offset_units = 0;
   // Enabled state that changes pictures and that the sink is not given (fog, polygon offset and
   // modes, ...): one line each, for the sink to report.
   std::vector<std::string> unsupported;

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "backends/glsl/glsl_backend.h"
+#include "egl_here.h"
 #include "backends/glsl/vertex_compare.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
@@ -20,12 +21,7 @@
 namespace ffc {
 namespace {
 
-bool egl_here() {
-  std::string why;
-  if (platform::EglContext::available(&why)) return true;
-  std::fprintf(stderr, "no EGL display: %s\n", why.c_str());
-  return false;
-}
+using test::egl_here;
 
 struct Case {
   std::string name;

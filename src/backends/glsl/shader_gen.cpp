@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "backends/glsl/shader_features.h"
+
 namespace ffc::glsl {
 
 namespace {
@@ -53,14 +55,22 @@ ProgramKey ProgramKey::of(const state::SinkState& s, bool phong) {
   k.key = s.lighting ? s.key : lighting::Key{};
   k.flat = s.flat;
   if (k.lit && k.key.color_material()) k.cm_faces = unsigned(s.model.cm_faces), k.cm_mode = s.model.cm_mode;
+  feature_key(k, s);
   return k;
 }
 
 uint64_t ProgramKey::packed() const {
   // Only the bits a program's code depends on: the shininess-0 bit changes no code here.
   const uint64_t extra = key.extra & ~(1u << lighting::Key::kShininessZero);
+  // Colour material's mode and fog's mode as small numbers (0 for none).
+  const GLenum cm_modes[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE};
+  uint64_t cm = 0;
+  for (uint64_t i = 0; i < 5; ++i)
+    if (cm_mode == cm_modes[i]) cm = i + 1;
+  const uint64_t fog_mode = fog == GL_LINEAR ? 1 : fog == GL_EXP ? 2 : fog == GL_EXP2 ? 3 : 0;
   return uint64_t(key.bits) | extra << 32 | uint64_t(lit) << 42 | uint64_t(flat) << 43 | uint64_t(cm_faces & 3) << 44 |
-         uint64_t(cm_mode & 0xFFFF) << 46 | uint64_t(phong) << 62;
+         cm << 46 | uint64_t(phong) << 49 | fog_mode << 50 | uint64_t(fog_depth) << 52 |
+         uint64_t((alpha_func - GL_NEVER) & 7) << 53;
 }
 
 bool ProgramKey::needs_eye_position() const {
@@ -75,8 +85,10 @@ bool ProgramKey::needs_eye_position() const {
 std::vector<Uniform> uniforms(const ProgramKey& k, const state::SinkState* s) {
   UniformList u{s, {}};
   u.add("u_mvp", "mat4", 16, s ? glm::value_ptr(s->mvp) : nullptr);
+  if (k.needs_eye_position() || (k.fog && k.fog_depth))
+    u.add("u_modelview", "mat4", 16, s ? glm::value_ptr(s->modelview) : nullptr);
+  feature_uniforms(k, s, u.out);
   if (!k.lit) return u.out;
-  if (k.needs_eye_position()) u.add("u_modelview", "mat4", 16, s ? glm::value_ptr(s->modelview) : nullptr);
   const glm::mat3 inv = s ? glm::mat3(s->normal_inverse) : glm::mat3(1);
   u.add("u_normal_inverse", "mat3", 9, glm::value_ptr(inv));
   if (k.key.rescale() && !k.key.normalize()) u.scalar("u_rescale", s ? s->rescale : 0);
@@ -265,15 +277,16 @@ Sources generate_phong(const ProgramKey& k) {
   Sources s;
   std::string v = header(k) + "layout(location = 0) in vec4 a_position;\nlayout(location = 1) in vec3 a_normal;\n"
                               "layout(location = 2) in vec4 a_color;\n";
-  v += declarations(k) + "out vec3 v_eye;\nout vec3 v_normal;\nout vec4 v_color;\n";
+  v += declarations(k) + fog_vertex_declarations(k) + "out vec3 v_eye;\nout vec3 v_normal;\nout vec4 v_color;\n";
   v += "void main() {\n  gl_Position = u_mvp * a_position;\n  v_eye = (u_modelview * a_position).xyz;\n";
-  v += eye_normal(k) + "  v_normal = normal;\n  v_color = a_color;\n}\n";
-  std::string fr = header(k) + declarations(k) + "in vec3 v_eye;\nin vec3 v_normal;\nin vec4 v_color;\n";
+  v += eye_normal(k) + "  v_normal = normal;\n  v_color = a_color;\n" + fog_vertex_code(k) + "}\n";
+  std::string fr = header(k) + declarations(k) + feature_fragment_declarations(k, false) +
+                   "in vec3 v_eye;\nin vec3 v_normal;\nin vec4 v_color;\n";
   fr += "out vec4 o_color;\nvoid main() {\n  vec3 eye = v_eye;\n  vec3 normal = v_normal;\n  vec4 a_color = v_color;\n";
   // Interpolation shortens unit normals between the vertices: made unit again (Phong's shading).
   fr += "  float len = length(normal);\n  normal = len > 0.0 ? normal / len : normal;\n";
   for (const std::string& o : colour_varyings(k)) fr += "  vec4 " + o + ";\n";
-  fr += lighting_code(k) + colour_sum(k) + "}\n";
+  fr += lighting_code(k) + colour_sum(k) + feature_fragment_code(k) + "}\n";
   s.vertex = v, s.fragment = fr;
   s.feedback = {"gl_Position", "v_color"};
   return s;
@@ -290,16 +303,16 @@ Sources generate(const ProgramKey& k) {
   v += "layout(location = 2) in vec4 a_color;\n" + declarations(k);
   const std::vector<std::string> outs = colour_varyings(k);
   for (const std::string& o : outs) v += q + "out vec4 " + o + ";\n";
-  v += "void main() {\n  gl_Position = u_mvp * a_position;\n";
+  v += fog_vertex_declarations(k) + "void main() {\n  gl_Position = u_mvp * a_position;\n" + fog_vertex_code(k);
   if (!k.lit) {
     v += "  v_front = saturate(a_color);\n}\n";
   } else {
     if (k.needs_eye_position()) v += "  vec3 eye = (u_modelview * a_position).xyz;\n";
     v += eye_normal(k) + lighting_code(k) + "}\n";
   }
-  std::string fr = "#version 330 core\n";
+  std::string fr = "#version 330 core\n" + feature_fragment_declarations(k, true);
   for (const std::string& o : outs) fr += q + "in vec4 " + o + ";\n";
-  fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + "}\n";
+  fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + feature_fragment_code(k) + "}\n";
   s.vertex = v, s.fragment = fr;
   s.feedback = {"gl_Position", "v_front"};
   if (k.two_side()) s.feedback.push_back("v_back");

@@ -3,6 +3,8 @@
 // and mode), holding only the terms the key enables. Lighting is the equation of GL 2.1 section
 // 2.14.1 as src/lighting evaluates it, per vertex, in eye space.
 #pragma once
+#include <GL/gl.h>
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -20,12 +22,19 @@ struct ProgramKey {
   unsigned cm_faces = 0;   // colour material per vertex (the key's bit): bit 0 front, bit 1 back
   unsigned cm_mode = 0;    // and the material parameter it tracks (GL_AMBIENT ... GL_AMBIENT_AND_DIFFUSE)
   bool phong = false;      // the equation per fragment (--shading phong), lit and smooth only
+  // The fragment stage's fixed functions (shader_features.cpp): fog's mode (0: off, else
+  // GL_LINEAR, GL_EXP, GL_EXP2) and whether its coordinate is the eye-space depth (else the
+  // current fog coordinate, 0); the alpha test's function (GL_ALWAYS when the test is off).
+  GLenum fog = 0;
+  bool fog_depth = false;
+  GLenum alpha_func = GL_ALWAYS;
 
   static ProgramKey of(const state::SinkState& s, bool phong = false);
   uint64_t packed() const;  // equal keys, equal numbers: the program cache's key
   bool two_side() const { return lit && key.two_side(); }
   bool secondary() const { return lit && key.separate_specular() && key.any_light() && key.specular(); }
   bool needs_eye_position() const;
+  bool alpha_test() const { return alpha_func != GL_ALWAYS; }
 };
 
 // A uniform of a program: its name, GLSL type and value (column-major for matrices).

@@ -1,0 +1,160 @@
+// The GLSL backend's fixed functions after lighting, each against Mesa's fixed-function pipeline
+// on the same pictures (within one 8-bit step) and against the rule GL states where the rule
+// decides a pixel outright: the alpha test, fog.
+#include <gtest/gtest.h>
+
+#ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
+#include <cmath>
+#include <functional>
+
+#include "backends/glsl/glsl_backend.h"
+#include "egl_here.h"
+#include "gl/dispatch.h"
+#include "image/compare.h"
+
+namespace ffc {
+namespace {
+
+using test::egl_here;
+
+struct Pictures {
+  image::Image mesa, glsl;
+  std::vector<std::string> unsupported;  // what the GLSL backend said it did not draw
+};
+
+Pictures draw_both(int w, int h, const std::function<void()>& draw) {
+  auto mesa = backends::make("mesa");
+  backends::GlslBackend ours;
+  mesa->begin(w, h), ours.begin(w, h);
+  ours.resume(), draw();
+  Pictures p;
+  p.glsl = ours.read();
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  p.unsupported.assign(ours.renderer()->unsupported().begin(), ours.renderer()->unsupported().end());
+  mesa->resume(), draw();
+  p.mesa = mesa->read();
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  return p;
+}
+
+void expect_as_mesa(const Pictures& p) {
+  EXPECT_TRUE(p.unsupported.empty()) << p.unsupported.front();
+  const image::Diff c = image::compare(p.mesa, p.glsl);
+  EXPECT_LE(c.max_diff, 1);
+}
+
+std::vector<int> rgba(const image::Image& img, int x, int y) {
+  const uint8_t* p = img.at(x, y);
+  return {p[0], p[1], p[2], p[3]};
+}
+
+// A quad across the window whose alpha runs from 0 (left) to 1 (right), over a blue clear.
+void alpha_ramp(GLenum func, float ref) {
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_ALPHA_TEST);
+  glAlphaFunc(func, ref);
+  glBegin(GL_QUADS);
+  glColor4f(1, 0.5f, 0, 0), glVertex2f(-1, -1);
+  glColor4f(1, 0.5f, 0, 1), glVertex2f(1, -1);
+  glColor4f(1, 0.5f, 0, 1), glVertex2f(1, 1);
+  glColor4f(1, 0.5f, 0, 0), glVertex2f(-1, 1);
+  glEnd();
+}
+
+TEST(GlslFeatures, AlphaTestEveryFunctionAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  for (GLenum func = GL_NEVER; func <= GL_ALWAYS; ++func)
+    for (float ref : {0.0f, 0.3f, 0.5f, 1.0f}) {
+      SCOPED_TRACE(testing::Message() << "func 0x" << std::hex << func << " ref " << ref);
+      expect_as_mesa(draw_both(64, 16, [&] { alpha_ramp(func, ref); }));
+    }
+}
+
+// Where the rule decides: alpha 0 at the left edge fails GL_GREATER 0.5 (the clear shows), alpha
+// near 1 at the right passes (the quad's colour); GL_NEVER draws nothing, GL_ALWAYS everything.
+TEST(GlslFeatures, AlphaTestKeepsAndDiscardsByTheRule) {
+  if (!egl_here()) GTEST_SKIP();
+  const std::vector<int> clear = {0, 0, 255, 255};
+  Pictures p = draw_both(64, 16, [] { alpha_ramp(GL_GREATER, 0.5f); });
+  EXPECT_EQ(rgba(p.glsl, 1, 8), clear);
+  const std::vector<int> right = rgba(p.glsl, 62, 8);
+  EXPECT_EQ(right[0], 255);
+  EXPECT_EQ(right[1], 128);  // 0.5 * 255 = 127.5, to even
+  EXPECT_EQ(right[2], 0);
+  p = draw_both(64, 16, [] { alpha_ramp(GL_NEVER, 0); });
+  EXPECT_EQ(rgba(p.glsl, 62, 8), clear);
+  p = draw_both(64, 16, [] { alpha_ramp(GL_ALWAYS, 0); });
+  EXPECT_EQ(rgba(p.glsl, 1, 8)[0], 255);
+}
+
+// A lit (or unlit, or flat) floor receding from 1.5 to 15 units, lines and points beside it, in
+// perspective: the fog coordinate changes along every primitive.
+void fog_scene(GLenum mode, GLenum source, GLenum shade, bool lit) {
+  glClearColor(0.1f, 0.2f, 0.3f, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glMatrixMode(GL_PROJECTION);
+  glFrustum(-1, 1, -1, 1, 1, 20);
+  glMatrixMode(GL_MODELVIEW);
+  glShadeModel(shade);
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GLint(mode));
+  const float fog_color[4] = {0.8f, 0.7f, 0.6f, 1};
+  glFogfv(GL_FOG_COLOR, fog_color);
+  glFogf(GL_FOG_DENSITY, 0.15f), glFogf(GL_FOG_START, 2), glFogf(GL_FOG_END, 12);
+  glFogi(GL_FOG_COORD_SRC, GLint(source));
+  if (lit) glEnable(GL_LIGHTING), glEnable(GL_LIGHT0), glEnable(GL_COLOR_MATERIAL);
+  glBegin(GL_QUAD_STRIP);
+  for (int i = 0; i <= 6; ++i) {
+    const float z = -1.5f - 2.25f * float(i);
+    glNormal3f(0, 1, 0.3f * float(i % 2));
+    glColor3f(0.2f + 0.1f * float(i), 0.9f - 0.1f * float(i), 0.4f);
+    glVertex3f(-1.2f, -0.8f, z), glVertex3f(1.2f, -0.8f, z);
+  }
+  glEnd();
+  glLineWidth(2);  // points of 1 pixel, off the pixel edges: see docs/glsl.md on wide points
+  glBegin(GL_LINES);
+  glColor3f(1, 1, 0), glVertex3f(-0.9f, 0.2f, -1.5f), glVertex3f(0.9f, 0.6f, -15);
+  glEnd();
+  glBegin(GL_POINTS);
+  for (int i = 0; i < 6; ++i) glColor3f(0, 1, 1), glVertex3f(-0.47f + 0.2f * float(i), 0.13f, -2.0f - 2.5f * float(i));
+  glEnd();
+}
+
+TEST(GlslFeatures, FogEveryModeAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  for (GLenum mode : {GL_LINEAR, GL_EXP, GL_EXP2})
+    for (GLenum source : {GL_FRAGMENT_DEPTH, GL_FOG_COORD})
+      for (GLenum shade : {GL_SMOOTH, GL_FLAT})
+        for (bool lit : {false, true}) {
+          SCOPED_TRACE(testing::Message() << "mode 0x" << std::hex << mode << " source 0x" << source << " shade 0x"
+                                          << shade << (lit ? " lit" : " unlit"));
+          expect_as_mesa(draw_both(64, 64, [&] { fog_scene(mode, source, shade, lit); }));
+        }
+}
+
+// Linear fog from 2 to 12: a black quad facing the eye at depth 7 is half fogged, every pixel of
+// it: 0.5 * 255 = 127.5, either neighbour as the factor rounds in float.
+TEST(GlslFeatures, LinearFogHalfWayIsHalfTheFogColour) {
+  if (!egl_here()) GTEST_SKIP();
+  const Pictures p = draw_both(16, 16, [] {
+    glMatrixMode(GL_PROJECTION);
+    glFrustum(-1, 1, -1, 1, 1, 20);
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR), glFogf(GL_FOG_START, 2), glFogf(GL_FOG_END, 12);
+    glColor3f(0, 0, 0);
+    const float fog_color[4] = {1, 1, 1, 1};
+    glFogfv(GL_FOG_COLOR, fog_color);
+    glBegin(GL_QUADS);
+    glVertex3f(-7, -7, -7), glVertex3f(7, -7, -7), glVertex3f(7, 7, -7), glVertex3f(-7, 7, -7);
+    glEnd();
+  });
+  expect_as_mesa(p);
+  for (int y : {1, 8, 14})
+    for (int x : {1, 8, 14}) EXPECT_NEAR(rgba(p.glsl, x, y)[0], 127.5, 0.5);
+}
+
+}  // namespace
+}  // namespace ffc
+#endif  // FFCOMPAT_WITH_GLSL
