@@ -1,6 +1,6 @@
 // The GLSL backend's fixed functions after lighting, each against Mesa's fixed-function pipeline
 // on the same pictures (within one 8-bit step) and against the rule GL states where the rule
-// decides a pixel outright: the alpha test, fog.
+// decides a pixel outright: the alpha test, fog, polygon offset.
 #include <gtest/gtest.h>
 
 #ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
@@ -153,6 +153,48 @@ TEST(GlslFeatures, LinearFogHalfWayIsHalfTheFogColour) {
   expect_as_mesa(p);
   for (int y : {1, 8, 14})
     for (int x : {1, 8, 14}) EXPECT_NEAR(rgba(p.glsl, x, y)[0], 127.5, 0.5);
+}
+
+// Two copies of a slanted quad, the second through GL_LESS: without an offset it fails
+// everywhere (equal depths); pulled forward by glPolygonOffset it passes everywhere; pushed back,
+// it fails even through GL_LEQUAL.
+void offset_scene(float factor, float units, GLenum func) {
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(func);
+  glMatrixMode(GL_PROJECTION);
+  glFrustum(-1, 1, -1, 1, 1, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glTranslatef(0, 0, -3);
+  glRotatef(55, 1, 0.3f, 0);
+  auto quad = [] {
+    glBegin(GL_QUADS);
+    glVertex2f(-1, -1), glVertex2f(1, -1), glVertex2f(1, 1), glVertex2f(-1, 1);
+    glEnd();
+  };
+  glColor3f(1, 0, 0), quad();
+  if (factor != 0 || units != 0) glEnable(GL_POLYGON_OFFSET_FILL), glPolygonOffset(factor, units);
+  glColor3f(0, 1, 0), quad();
+}
+
+TEST(GlslFeatures, PolygonOffsetAsMesaAndByTheRule) {
+  if (!egl_here()) GTEST_SKIP();
+  struct Case {
+    float factor, units;
+    GLenum func;
+    std::vector<int> centre;
+  };
+  const Case cases[] = {{0, 0, GL_LESS, {255, 0, 0, 255}},
+                        {-1, -1, GL_LESS, {0, 255, 0, 255}},
+                        {0, -2, GL_LESS, {0, 255, 0, 255}},
+                        {1, 1, GL_LEQUAL, {255, 0, 0, 255}}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(testing::Message() << "offset " << c.factor << ", " << c.units);
+    const Pictures p = draw_both(48, 48, [&] { offset_scene(c.factor, c.units, c.func); });
+    expect_as_mesa(p);
+    EXPECT_EQ(rgba(p.glsl, 24, 24), c.centre);
+  }
 }
 
 }  // namespace

@@ -19,7 +19,8 @@ namespace ffc::glsl {
   X(decltype(&::glPointSize), PointSize) X(decltype(&::glLineWidth), LineWidth)                           \
   X(decltype(&::glReadPixels), ReadPixels) X(decltype(&::glPixelStorei), PixelStorei)                     \
   X(decltype(&::glFinish), Finish) X(decltype(&::glGetError), GetError)                                   \
-  X(decltype(&::glDrawElements), DrawElements)                                                            \
+  X(decltype(&::glDrawElements), DrawElements) X(decltype(&::glPolygonOffset), PolygonOffset)           \
+  X(decltype(&::glPolygonMode), PolygonMode)                                                              \
   X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate) X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate) \
   X(PFNGLBLENDCOLORPROC, BlendColor)                                                                      \
   X(PFNGLCREATESHADERPROC, CreateShader) X(PFNGLSHADERSOURCEPROC, ShaderSource)                           \

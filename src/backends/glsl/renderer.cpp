@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "backends/glsl/primitives.h"
+#include "backends/glsl/raster_features.h"
 #include "raster/raster.h"
 
 namespace ffc::glsl {
@@ -163,6 +164,7 @@ void Renderer::apply(const state::SinkState& s) {
   gl_.PointSize(s.point_size);
   gl_.LineWidth(s.line_width);
   apply_fragment(s);
+  apply_raster_features(gl_, s);
   const state::FragmentState& f = *s.fragment;
   if (f.blend) {
     gl_.Enable(GL_BLEND);
