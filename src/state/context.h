@@ -345,6 +345,10 @@ class Context {
   bool sink_draws() const { return sink_ && render_mode_ == GL_RENDER; }
   void sink_vertex(const glm::dvec4& obj);
   void sink_end();
+  std::vector<SinkMaterial> sink_materials_;  // per vertex, once glMaterial changed inside glBegin
+  bool sink_material_varies_ = false;
+  SinkMaterial sink_material() const;
+  void sink_material_changes();  // glMaterial inside glBegin/glEnd (draw_sink.cpp)
   void sink_fetch(GLint first, GLsizei count);  // array elements into sink_verts_
   void sink_arrays(GLenum mode, GLint first, GLsizei count);
   void sink_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);

@@ -51,11 +51,37 @@ SinkState Context::sink_state() {
 
 void Context::sink_vertex(const glm::dvec4& obj) {
   sink_verts_.push_back({glm::vec4(obj), glm::vec3(normal_), glm::vec4(color_)});
+  if (sink_material_varies_) sink_materials_.push_back(sink_material());
+}
+
+SinkMaterial Context::sink_material() const {
+  SinkMaterial m;
+  for (int f = 0; f < 2; ++f) {
+    const lighting::MaterialParams& p = materials_[f];
+    m.face[f][0] = glm::vec4(glm::vec3(p.ambient), float(p.shininess));
+    m.face[f][1] = glm::vec4(p.diffuse), m.face[f][2] = glm::vec4(p.specular), m.face[f][3] = glm::vec4(p.emission);
+  }
+  return m;
+}
+
+// glMaterial between glBegin and glEnd while a sink draws: from here on each vertex carries the
+// material as it stood at its glVertex (Mesa's vbo makes them per-vertex attributes too); the
+// vertices before it, the material as it was.
+void Context::sink_material_changes() {
+  if (sink_material_varies_) return;
+  sink_material_varies_ = true;
+  sink_materials_.assign(sink_verts_.size(), sink_material());
 }
 
 void Context::sink_end() {
-  if (!sink_verts_.empty()) sink_->draw(sink_state(), prim_mode_, sink_verts_.data(), sink_verts_.size(), nullptr, 0);
+  if (!sink_verts_.empty()) {
+    SinkState s = sink_state();
+    if (sink_material_varies_) s.vertex_materials = &sink_materials_;
+    sink_->draw(s, prim_mode_, sink_verts_.data(), sink_verts_.size(), nullptr, 0);
+  }
   sink_verts_.clear();
+  sink_materials_.clear();
+  sink_material_varies_ = false;
 }
 
 // Array elements [first, first + count) as a draw reads them into sink_verts_: each attribute

@@ -25,6 +25,13 @@ struct SinkVertex {
   glm::vec4 color;
 };
 
+// The material of both faces at one vertex, for a glBegin/glEnd whose glMaterial calls change it
+// between vertices: per face ambient (its alpha holding the shininess), diffuse, specular and
+// emission, as the GLSL backend streams them (32 floats).
+struct SinkMaterial {
+  glm::vec4 face[2][4];
+};
+
 struct SinkState {
   bool lighting = false;
   lighting::Key key;  // Key{} when lighting is off
@@ -55,6 +62,9 @@ struct SinkState {
   // Polygon offset (glPolygonOffset's values as given; the sink's GL scales the units itself).
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0, offset_units = 0;
+  // One material per vertex when glMaterial changed it inside this glBegin/glEnd; null otherwise
+  // (`materials` then holds for every vertex).
+  const std::vector<SinkMaterial>* vertex_materials = nullptr;
   // Enabled state that changes pictures and that the sink is not given (fog, polygon offset and
   // modes, ...): one line each, for the sink to report.
   std::vector<std::string> unsupported;

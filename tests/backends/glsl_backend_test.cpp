@@ -1,7 +1,7 @@
 // The GLSL backend against Mesa: every built-in configuration and shipped scene within 1e-5 of
 // Mesa's lit vertex colours (the shaders' outputs through transform feedback against Mesa's
 // feedback) and within one 8-bit step on every pixel; the program cache; flat shading's provoking
-// vertices; what the backend refuses.
+// vertices; glReadPixels.
 #include <gtest/gtest.h>
 
 #ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
@@ -253,21 +253,6 @@ TEST(GlslBackend, FlatShadingTakesGlsProvokingVertex) {
     EXPECT_EQ(rgb(8, y), (std::vector<int>{255, 255, 0}));  // the quad's 4th: yellow
     EXPECT_EQ(rgb(24, y), (std::vector<int>{255, 0, 0}));   // the polygon's 1st: red
   }
-}
-
-TEST(GlslBackend, MaterialInsideBeginEndIsRefusedAndChangesNothing) {
-  if (!egl_here()) GTEST_SKIP();
-  backends::GlslBackend b;
-  b.begin(8, 8);
-  const float red[4] = {1, 0, 0, 1};
-  glBegin(GL_TRIANGLES);
-  glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
-  glEnd();
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  float d[4];
-  glGetMaterialfv(GL_FRONT, GL_DIFFUSE, d);
-  EXPECT_FLOAT_EQ(d[0], 0.8f);  // GL's default, unchanged
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 TEST(GlslBackend, ReadPixelsReadsTheShadersPicture) {

@@ -1,6 +1,7 @@
 // The GLSL backend's fixed functions after lighting, each against Mesa's fixed-function pipeline
 // on the same pictures (within one 8-bit step) and against the rule GL states where the rule
-// decides a pixel outright: the alpha test, fog, polygon offset.
+// decides a pixel outright: the alpha test, fog, polygon offset, glMaterial between glBegin and
+// glEnd.
 #include <gtest/gtest.h>
 
 #ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
@@ -8,6 +9,7 @@
 #include <functional>
 
 #include "backends/glsl/glsl_backend.h"
+#include "backends/glsl/vertex_compare.h"
 #include "egl_here.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
@@ -195,6 +197,93 @@ TEST(GlslFeatures, PolygonOffsetAsMesaAndByTheRule) {
     expect_as_mesa(p);
     EXPECT_EQ(rgba(p.glsl, 24, 24), c.centre);
   }
+}
+
+// Lit strips whose material changes between vertices (each face, each parameter, the shininess),
+// with two-sided lighting and colour material tracking the diffuse term or not, then a triangle
+// after glEnd that keeps the last material. `third`: the face of the ambient and diffuse change.
+void material_changes(bool two_side, bool color_material, GLenum third = GL_FRONT_AND_BACK) {
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(-1, 1, -1, 1, -2, 2);
+  glMatrixMode(GL_MODELVIEW);
+  glRotatef(25, 1, 0.5f, 0);
+  glEnable(GL_LIGHTING), glEnable(GL_LIGHT0), glEnable(GL_LIGHT1);
+  const float p1[4] = {0.4f, 0.6f, 1, 1}, spec[4] = {1, 1, 1, 1};
+  glLightfv(GL_LIGHT1, GL_POSITION, p1), glLightfv(GL_LIGHT1, GL_SPECULAR, spec), glLightfv(GL_LIGHT1, GL_DIFFUSE, spec);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, two_side);
+  if (color_material) glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE), glEnable(GL_COLOR_MATERIAL);
+  for (int strip = 0; strip < 2; ++strip) {  // the second wound the other way: its back faces show
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i < 10; ++i) {
+      const float t = float(i) / 9;
+      const float m[4] = {t, 1 - t, 0.5f * t + 0.2f, 0.5f + 0.5f * t};
+      switch (i % 5) {
+        case 1: glMaterialfv(GL_FRONT, GL_DIFFUSE, m); break;
+        case 2: glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, m), glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 5 + 30 * t); break;
+        case 3: glMaterialfv(third, GL_AMBIENT_AND_DIFFUSE, m); break;
+        case 4: glMaterialfv(strip ? GL_BACK : GL_FRONT, GL_EMISSION, m); break;
+      }
+      glColor3f(0.9f - 0.5f * t, 0.3f + 0.6f * t, 0.6f);
+      glNormal3f(0.3f * std::cos(4 * t), 0.3f * std::sin(4 * t), 1);
+      const float x = -0.9f + 1.8f * t, y = (strip ? -0.1f : 0.5f) + 0.35f * float((i + strip) % 2);
+      glVertex2f(x, y - (strip ? 0.5f : 0.0f));
+    }
+    glEnd();
+  }
+  glBegin(GL_TRIANGLES);
+  glNormal3f(0, 0, 1);
+  glVertex2f(-0.2f, -0.95f), glVertex2f(0.2f, -0.95f), glVertex2f(0, -0.7f);
+  glEnd();
+}
+
+TEST(GlslFeatures, MaterialBetweenBeginAndEndAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  for (bool two_side : {false, true})
+    for (bool cm : {false, true}) {
+      SCOPED_TRACE(testing::Message() << (two_side ? "two-sided" : "one-sided") << (cm ? ", colour material" : ""));
+      const glsl::VertexComparison r = glsl::compare_with_mesa(96, 96, [&] { material_changes(two_side, cm); });
+      EXPECT_EQ(r.compared, 17u);  // 8 + 8 strip triangles, the one after
+      EXPECT_EQ(r.unpaired, 0u);
+      EXPECT_LE(r.max_abs, 1e-5);
+      expect_as_mesa(draw_both(96, 96, [&] { material_changes(two_side, cm); }));
+    }
+}
+
+// A GL_BACK-only ambient, diffuse or specular change inside glBegin under two-sided lighting is a
+// departure of Mesa's (its back faces differ by up to 249 steps; GL_FRONT_AND_BACK, GL_FRONT and
+// GL_BACK's emission agree): there the backend draws GL's rule, as soft lights each vertex with
+// the material current at it: the same picture as soft's, exactly.
+TEST(GlslFeatures, BackMaterialBetweenBeginAndEndAsSoft) {
+  if (!egl_here()) GTEST_SKIP();
+  for (bool cm : {false, true}) {
+    auto soft = backends::make("soft");
+    backends::GlslBackend ours;
+    soft->begin(96, 96), ours.begin(96, 96);
+    soft->resume(), material_changes(true, cm, GL_BACK);
+    const image::Image want = soft->read();
+    ours.resume(), material_changes(true, cm, GL_BACK);
+    EXPECT_EQ(image::compare(want, ours.read()).max_diff, 0);
+  }
+}
+
+// GL's rule: glMaterial inside glBegin/glEnd is no error and the material stays as last set.
+TEST(GlslFeatures, MaterialBetweenBeginAndEndStaysAfterwards) {
+  if (!egl_here()) GTEST_SKIP();
+  backends::GlslBackend b;
+  b.begin(8, 8);
+  const float red[4] = {1, 0, 0, 1};
+  glEnable(GL_LIGHTING);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(0, 0);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
+  glVertex2f(1, 0), glVertex2f(0, 1);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  float d[4], back[4];
+  glGetMaterialfv(GL_FRONT, GL_DIFFUSE, d);
+  glGetMaterialfv(GL_BACK, GL_DIFFUSE, back);
+  EXPECT_EQ((std::vector<float>(d, d + 4)), (std::vector<float>{1, 0, 0, 1}));
+  EXPECT_FLOAT_EQ(back[0], 0.8f);  // GL's default, untouched
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ namespace ffc::glsl {
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers) X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)                 \
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                                    \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                            \
+  X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray)                                          \
   X(PFNGLTRANSFORMFEEDBACKVARYINGSPROC, TransformFeedbackVaryings)                                        \
   X(PFNGLBINDBUFFERBASEPROC, BindBufferBase) X(PFNGLBEGINTRANSFORMFEEDBACKPROC, BeginTransformFeedback)   \
   X(PFNGLENDTRANSFORMFEEDBACKPROC, EndTransformFeedback)

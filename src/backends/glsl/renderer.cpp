@@ -65,6 +65,7 @@ Renderer::Renderer(const CoreGl& gl) : gl_(gl) {
 
 Renderer::~Renderer() {
   for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
+  materials_.destroy(gl_);
   const GLuint b[3] = {vbo_, ebo_, tfb_};
   gl_.DeleteBuffers(3, b);
   gl_.DeleteVertexArrays(1, &vao_);
@@ -194,6 +195,7 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_);
   gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(state::SinkVertex)), v, GL_STREAM_DRAW);
   gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(list_.size() * sizeof(uint32_t)), list_.data(), GL_STREAM_DRAW);
+  materials_.stream(gl_, s.vertex_materials);
   if (capture_) return capture_draw(s, list_mode, p, list_.size());
   gl_.DrawElements(list_mode, GLsizei(list_.size()), GL_UNSIGNED_INT, nullptr);
 }

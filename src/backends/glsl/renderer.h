@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "backends/glsl/gl_core.h"
+#include "backends/glsl/material_stream.h"
 #include "backends/glsl/shader_gen.h"
 #include "state/draw_sink.h"
 
@@ -80,6 +81,7 @@ class Renderer final : public state::DrawSink {
   std::vector<CapturedDraw> captured_;
   Stats stats_;
   std::set<std::string> unsupported_;
+  MaterialStream materials_;  // glMaterial inside glBegin/glEnd (material_stream.h)
 };
 
 }  // namespace ffc::glsl

@@ -51,7 +51,9 @@ struct UniformList {
 ProgramKey ProgramKey::of(const state::SinkState& s, bool phong) {
   ProgramKey k;
   k.lit = s.lighting;
-  k.phong = phong && s.lighting && !s.flat;  // GL_FLAT keeps one colour per primitive
+  k.vertex_material = s.lighting && s.vertex_materials;
+  // GL_FLAT keeps one colour per primitive; a material per vertex stays per vertex.
+  k.phong = phong && s.lighting && !s.flat && !k.vertex_material;
   k.key = s.lighting ? s.key : lighting::Key{};
   k.flat = s.flat;
   if (k.lit && k.key.color_material()) k.cm_faces = unsigned(s.model.cm_faces), k.cm_mode = s.model.cm_mode;
@@ -70,7 +72,7 @@ uint64_t ProgramKey::packed() const {
   const uint64_t fog_mode = fog == GL_LINEAR ? 1 : fog == GL_EXP ? 2 : fog == GL_EXP2 ? 3 : 0;
   return uint64_t(key.bits) | extra << 32 | uint64_t(lit) << 42 | uint64_t(flat) << 43 | uint64_t(cm_faces & 3) << 44 |
          cm << 46 | uint64_t(phong) << 49 | fog_mode << 50 | uint64_t(fog_depth) << 52 |
-         uint64_t((alpha_func - GL_NEVER) & 7) << 53;
+         uint64_t((alpha_func - GL_NEVER) & 7) << 53 | uint64_t(vertex_material) << 56;
 }
 
 bool ProgramKey::needs_eye_position() const {
@@ -94,7 +96,7 @@ std::vector<Uniform> uniforms(const ProgramKey& k, const state::SinkState* s) {
   if (k.key.rescale() && !k.key.normalize()) u.scalar("u_rescale", s ? s->rescale : 0);
   u.vec3("u_global_ambient", s ? glm::dvec3(s->model.ambient) : glm::dvec3(0));
   const int faces = k.two_side() ? 2 : 1;
-  for (int f = 0; f < faces; ++f) {
+  for (int f = 0; f < faces && !k.vertex_material; ++f) {
     const lighting::MaterialParams m = s ? s->materials[f] : lighting::MaterialParams{};
     const std::string p = std::string("u_") + face_name(f) + "_";
     if (!tracks(k, f, GL_AMBIENT)) u.vec3(p + "ambient", m.ambient);
@@ -140,9 +142,14 @@ namespace {
 std::string face_code(const ProgramKey& k, int f) {
   const lighting::Key& key = k.key;
   const std::string p = std::string("u_") + face_name(f) + "_";
+  // A material parameter: the colour when colour material tracks it, else its uniform or, when
+  // the material comes per vertex, its attribute (a vec4 each).
+  const std::string src = k.vertex_material ? std::string("a_") + face_name(f) + "_" : p;
   auto mat = [&](GLenum what, const char* name) {
-    return tracks(k, f, what) ? std::string("a_color.rgb") : p + name + (what == GL_DIFFUSE ? ".rgb" : "");
+    return tracks(k, f, what) ? std::string("a_color.rgb")
+                              : src + name + (what == GL_DIFFUSE || k.vertex_material ? ".rgb" : "");
   };
+  const std::string shininess = k.vertex_material ? src + "ambient.a" : p + "shininess";
   std::string c;
   c += "  {  // the " + std::string(face_name(f)) + " face\n";
   c += std::string("    vec3 n = ") + (f == 0 ? "normal" : "-normal") + ";\n";
@@ -182,7 +189,7 @@ std::string face_code(const ProgramKey& k, int f) {
         c += indent + "  float hl = length(h);\n";
         c += indent + "  h = hl > 0.0 ? h / hl : vec3(0.0);\n";
       }
-      c += indent + "  vec3 s = power(max(0.0, dot(n, h)), " + p + "shininess) * (" + L("specular") + " * ms);\n";
+      c += indent + "  vec3 s = power(max(0.0, dot(n, h)), " + shininess + ") * (" + L("specular") + " * ms);\n";
       c += indent + (k.secondary() ? "  secondary += att * s;\n" : "  sum += s;\n");
       c += indent + "}\n";
     }
@@ -191,7 +198,7 @@ std::string face_code(const ProgramKey& k, int f) {
     c += "    }\n";
     ++n;
   }
-  const std::string alpha = tracks(k, f, GL_DIFFUSE) ? "a_color.a" : p + "diffuse.a";
+  const std::string alpha = tracks(k, f, GL_DIFFUSE) ? "a_color.a" : src + "diffuse.a";
   c += std::string("    v_") + face_name(f) + " = saturate(vec4(color, " + alpha + "));\n";
   if (k.secondary()) c += std::string("    v_") + face_name(f) + "_secondary = saturate(vec4(secondary, 0.0));\n";
   c += "  }\n";
@@ -300,6 +307,13 @@ Sources generate(const ProgramKey& k) {
   const std::string q = k.flat ? "flat " : "";
   std::string v = header(k) + "layout(location = 0) in vec4 a_position;\n";
   if (k.lit) v += "layout(location = 1) in vec3 a_normal;\n";
+  if (k.vertex_material)
+    for (int f = 0; f < (k.two_side() ? 2 : 1); ++f)
+      for (int i = 0; i < 4; ++i) {
+        static const char* const names[4] = {"ambient", "diffuse", "specular", "emission"};
+        v += "layout(location = " + std::to_string(kMaterial + 4 * f + i) + ") in vec4 a_" + face_name(f) + "_" +
+             names[i] + ";\n";
+      }
   v += "layout(location = 2) in vec4 a_color;\n" + declarations(k);
   const std::vector<std::string> outs = colour_varyings(k);
   for (const std::string& o : outs) v += q + "out vec4 " + o + ";\n";

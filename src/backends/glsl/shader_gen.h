@@ -28,6 +28,9 @@ struct ProgramKey {
   GLenum fog = 0;
   bool fog_depth = false;
   GLenum alpha_func = GL_ALWAYS;
+  // glMaterial changed inside glBegin/glEnd: the material comes per vertex, as attributes
+  // (SinkMaterial's layout, from kMaterial on), not uniforms. Lit only; never per fragment.
+  bool vertex_material = false;
 
   static ProgramKey of(const state::SinkState& s, bool phong = false);
   uint64_t packed() const;  // equal keys, equal numbers: the program cache's key
@@ -56,7 +59,8 @@ struct Sources {
 };
 Sources generate(const ProgramKey& k);
 
-// The vertex attributes' locations (SinkVertex's fields).
-enum Attribute : unsigned { kPosition = 0, kNormal = 1, kColor = 2 };
+// The vertex attributes' locations (SinkVertex's fields; then SinkMaterial's: the front face's
+// ambient (shininess in its alpha), diffuse, specular, emission, then the back face's).
+enum Attribute : unsigned { kPosition = 0, kNormal = 1, kColor = 2, kMaterial = 3, kMaterialCount = 8 };
 
 }  // namespace ffc::glsl
