@@ -43,7 +43,7 @@ SinkState Context::sink_state() {
   s.offset_fill = offset_fill_;
   s.offset_line = enabled_state(GL_POLYGON_OFFSET_LINE) == 1, s.offset_point = enabled_state(GL_POLYGON_OFFSET_POINT) == 1;
   s.offset_factor = offset_factor_, s.offset_units = offset_units_;
-  if (unfilled()) s.unsupported.push_back("glPolygonMode other than GL_FILL");
+  s.polygon_mode[0] = polygon_mode_[0], s.polygon_mode[1] = polygon_mode_[1];
   if (frag_.line_stipple) s.unsupported.push_back("line stipple");
   if (precision_ == Precision::Double) s.unsupported.push_back("double precision (the shaders are float)");
   return s;

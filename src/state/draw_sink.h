@@ -62,6 +62,11 @@ struct SinkState {
   // Polygon offset (glPolygonOffset's values as given; the sink's GL scales the units itself).
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0, offset_units = 0;
+  // glPolygonMode per face (front, back). A sink drawing the faces of one mode at a time sets
+  // pass_mode to it and pass_faces to the faces it covers (bit 0 front, bit 1 back); 0: not split.
+  GLenum polygon_mode[2] = {GL_FILL, GL_FILL};
+  GLenum pass_mode = 0;
+  unsigned pass_faces = 3;
   // One material per vertex when glMaterial changed it inside this glBegin/glEnd; null otherwise
   // (`materials` then holds for every vertex).
   const std::vector<SinkMaterial>* vertex_materials = nullptr;

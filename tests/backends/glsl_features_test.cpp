@@ -1,7 +1,7 @@
 // The GLSL backend's fixed functions after lighting, each against Mesa's fixed-function pipeline
 // on the same pictures (within one 8-bit step) and against the rule GL states where the rule
 // decides a pixel outright: the alpha test, fog, polygon offset, glMaterial between glBegin and
-// glEnd.
+// glEnd, glPolygonMode.
 #include <gtest/gtest.h>
 
 #ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
@@ -284,6 +284,80 @@ TEST(GlslFeatures, MaterialBetweenBeginAndEndStaysAfterwards) {
   glGetMaterialfv(GL_BACK, GL_DIFFUSE, back);
   EXPECT_EQ((std::vector<float>(d, d + 4)), (std::vector<float>{1, 0, 0, 1}));
   EXPECT_FLOAT_EQ(back[0], 0.8f);  // GL's default, untouched
+}
+
+// Every polygon primitive, lit two-sided with per-vertex colours, each drawn twice: as given
+// (front-facing) and mirrored (back-facing), under the given polygon modes and culling.
+void polygon_modes(GLenum front, GLenum back, GLenum shade, GLenum cull) {
+  glClearColor(0.1f, 0.1f, 0.2f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glShadeModel(shade);
+  glPolygonMode(GL_FRONT, front), glPolygonMode(GL_BACK, back);
+  if (cull) glEnable(GL_CULL_FACE), glCullFace(cull);
+  glEnable(GL_LIGHTING), glEnable(GL_LIGHT0), glEnable(GL_COLOR_MATERIAL);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+  const float back_diffuse[4] = {0.2f, 0.9f, 0.3f, 1};
+  glMaterialfv(GL_BACK, GL_DIFFUSE, back_diffuse);
+  glColorMaterial(GL_FRONT, GL_DIFFUSE);
+  glPointSize(1), glLineWidth(1);
+  glTranslatef(0.0123f, 0.0171f, 0);  // no vertex on a pixel's edge (see docs/glsl.md on points)
+  const GLenum modes[] = {GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON};
+  for (int m = 0; m < 6; ++m)
+    for (int mirror = 0; mirror < 2; ++mirror) {
+      const float x0 = -0.93f + 0.31f * float(m), y0 = mirror ? -0.83f : 0.07f;
+      glBegin(modes[m]);
+      for (int i = 0; i < 8; ++i) {
+        const float a = 0.785f * float(i) + 0.1f;
+        glColor3f(0.3f + 0.08f * float(i), 0.9f - 0.1f * float(i), 0.5f);
+        glNormal3f(0.2f * std::cos(a), 0.2f * std::sin(a), mirror ? -1.0f : 1.0f);
+        const bool round = modes[m] == GL_TRIANGLE_FAN || modes[m] == GL_POLYGON;
+        const bool quads = modes[m] == GL_QUADS;
+        float x = round ? 0.13f + 0.12f * std::cos(a) : quads ? 0.25f * float((i % 4 == 1 || i % 4 == 2)) : 0.037f * float(i);
+        float y = round ? 0.37f + 0.35f * std::sin(a)
+                        : quads ? 0.37f * float(i / 4) + 0.33f * float(i % 4 >= 2) : 0.33f * float(i % 2) + 0.06f * float(i / 2);
+        if (mirror) x = 0.26f - x;  // the winding turned: back-facing
+        glVertex2f(x0 + x, y0 + y);
+      }
+      glEnd();
+    }
+}
+
+TEST(GlslFeatures, PolygonModesAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  struct Case {
+    GLenum front, back, cull;
+  };
+  const Case cases[] = {{GL_LINE, GL_LINE, 0},  {GL_POINT, GL_POINT, 0}, {GL_FILL, GL_LINE, 0}, {GL_LINE, GL_FILL, 0},
+                        {GL_POINT, GL_LINE, 0}, {GL_LINE, GL_POINT, GL_BACK}, {GL_LINE, GL_LINE, GL_FRONT},
+                        {GL_FILL, GL_POINT, GL_FRONT_AND_BACK}};
+  for (const Case& c : cases)
+    for (GLenum shade : {GL_SMOOTH, GL_FLAT}) {
+      SCOPED_TRACE(testing::Message() << std::hex << "front 0x" << c.front << " back 0x" << c.back << " cull 0x" << c.cull
+                                      << " shade 0x" << shade);
+      expect_as_mesa(draw_both(128, 96, [&] { polygon_modes(c.front, c.back, shade, c.cull); }));
+    }
+}
+
+// By the rule: a quad drawn as GL_LINE shows its four sides and not its diagonal.
+TEST(GlslFeatures, LineModeQuadHasNoDiagonal) {
+  if (!egl_here()) GTEST_SKIP();
+  const Pictures p = draw_both(32, 32, [] {
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glBegin(GL_QUADS);
+    glVertex2f(-0.5f, -0.5f), glVertex2f(0.5f, -0.5f), glVertex2f(0.5f, 0.5f), glVertex2f(-0.5f, 0.5f);
+    glEnd();
+  });
+  expect_as_mesa(p);
+  int lit = 0, inside = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const bool on = rgba(p.glsl, x, y)[0] == 255;
+      lit += on;
+      inside += on && x >= 10 && x <= 21 && y >= 10 && y <= 21;  // two pixels in from the sides
+    }
+  EXPECT_EQ(inside, 0);  // no diagonal
+  EXPECT_GE(lit, 4 * 15);  // the four sides, 16 pixels each less the shared corners' ends
+  EXPECT_EQ(rgba(p.glsl, 16, 16)[0], 0);
 }
 
 }  // namespace

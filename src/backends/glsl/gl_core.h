@@ -20,7 +20,8 @@ namespace ffc::glsl {
   X(decltype(&::glReadPixels), ReadPixels) X(decltype(&::glPixelStorei), PixelStorei)                     \
   X(decltype(&::glFinish), Finish) X(decltype(&::glGetError), GetError)                                   \
   X(decltype(&::glDrawElements), DrawElements) X(decltype(&::glPolygonOffset), PolygonOffset)           \
-  X(decltype(&::glPolygonMode), PolygonMode)                                                              \
+  X(decltype(&::glGenTextures), GenTextures) X(decltype(&::glBindTexture), BindTexture)                   \
+  X(decltype(&::glDeleteTextures), DeleteTextures) X(PFNGLTEXBUFFERPROC, TexBuffer)                        \
   X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate) X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate) \
   X(PFNGLBLENDCOLORPROC, BlendColor)                                                                      \
   X(PFNGLCREATESHADERPROC, CreateShader) X(PFNGLSHADERSOURCEPROC, ShaderSource)                           \

@@ -65,7 +65,7 @@ Renderer::Renderer(const CoreGl& gl) : gl_(gl) {
 
 Renderer::~Renderer() {
   for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
-  materials_.destroy(gl_);
+  materials_.destroy(gl_), edges_.destroy(gl_);
   const GLuint b[3] = {vbo_, ebo_, tfb_};
   gl_.DeleteBuffers(3, b);
   gl_.DeleteVertexArrays(1, &vao_);
@@ -97,6 +97,10 @@ Renderer::Program& Renderer::program_for(const ProgramKey& k) {
   p.id = gl_.CreateProgram();
   gl_.AttachShader(p.id, vs);
   gl_.AttachShader(p.id, fs);
+  if (!p.info.sources.geometry.empty()) {
+    const GLuint gs = compile(gl_, GL_GEOMETRY_SHADER, p.info.sources.geometry);
+    gl_.AttachShader(p.id, gs), gl_.DeleteShader(gs);
+  }
   std::vector<const char*> names;
   for (const std::string& n : p.info.sources.feedback) names.push_back(n.c_str());
   gl_.TransformFeedbackVaryings(p.id, GLsizei(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
@@ -179,11 +183,13 @@ void Renderer::apply(const state::SinkState& s) {
 
 void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVertex* v, size_t count,
                     const uint32_t* indices, size_t index_count) {
+  if (polygon_passes(s, mode, [&](const state::SinkState& pass) { draw(pass, mode, v, count, indices, index_count); }))
+    return;
   const size_t n = indices ? index_count : count;
   SplitRule rule;
-  rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_;
+  rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_ || s.pass_mode;
   if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
-  const GLenum list_mode = decompose(mode, indices, n, rule, list_);
+  const GLenum list_mode = decompose(mode, indices, n, rule, list_, edges_.flags(s));
   if (list_.empty()) return;
   ++stats_.draws;
   Program& p = program_for(ProgramKey::of(s, phong_));
@@ -196,6 +202,7 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(state::SinkVertex)), v, GL_STREAM_DRAW);
   gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(list_.size() * sizeof(uint32_t)), list_.data(), GL_STREAM_DRAW);
   materials_.stream(gl_, s.vertex_materials);
+  edges_.stream(gl_, s);
   if (capture_) return capture_draw(s, list_mode, p, list_.size());
   gl_.DrawElements(list_mode, GLsizei(list_.size()), GL_UNSIGNED_INT, nullptr);
 }

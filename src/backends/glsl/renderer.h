@@ -12,6 +12,7 @@
 #include "backends/glsl/gl_core.h"
 #include "backends/glsl/material_stream.h"
 #include "backends/glsl/shader_gen.h"
+#include "backends/glsl/unfilled.h"
 #include "state/draw_sink.h"
 
 namespace ffc::glsl {
@@ -82,6 +83,7 @@ class Renderer final : public state::DrawSink {
   Stats stats_;
   std::set<std::string> unsupported_;
   MaterialStream materials_;  // glMaterial inside glBegin/glEnd (material_stream.h)
+  EdgeStream edges_;          // glPolygonMode's boundary flags (unfilled.h)
 };
 
 }  // namespace ffc::glsl

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "backends/glsl/shader_features.h"
+#include "backends/glsl/unfilled.h"
 
 namespace ffc::glsl {
 
@@ -52,8 +53,9 @@ ProgramKey ProgramKey::of(const state::SinkState& s, bool phong) {
   ProgramKey k;
   k.lit = s.lighting;
   k.vertex_material = s.lighting && s.vertex_materials;
+  unfilled_key(k, s);
   // GL_FLAT keeps one colour per primitive; a material per vertex stays per vertex.
-  k.phong = phong && s.lighting && !s.flat && !k.vertex_material;
+  k.phong = phong && s.lighting && !s.flat && !k.vertex_material && !k.unfilled;
   k.key = s.lighting ? s.key : lighting::Key{};
   k.flat = s.flat;
   if (k.lit && k.key.color_material()) k.cm_faces = unsigned(s.model.cm_faces), k.cm_mode = s.model.cm_mode;
@@ -72,7 +74,9 @@ uint64_t ProgramKey::packed() const {
   const uint64_t fog_mode = fog == GL_LINEAR ? 1 : fog == GL_EXP ? 2 : fog == GL_EXP2 ? 3 : 0;
   return uint64_t(key.bits) | extra << 32 | uint64_t(lit) << 42 | uint64_t(flat) << 43 | uint64_t(cm_faces & 3) << 44 |
          cm << 46 | uint64_t(phong) << 49 | fog_mode << 50 | uint64_t(fog_depth) << 52 |
-         uint64_t((alpha_func - GL_NEVER) & 7) << 53 | uint64_t(vertex_material) << 56;
+         uint64_t((alpha_func - GL_NEVER) & 7) << 53 | uint64_t(vertex_material) << 56 |
+         uint64_t(unfilled == GL_LINE ? 1 : unfilled == GL_POINT ? 2 : 0) << 57 | uint64_t(unfilled_faces & 3) << 59 |
+         uint64_t(front_cw) << 61;
 }
 
 bool ProgramKey::needs_eye_position() const {
@@ -305,7 +309,7 @@ Sources generate(const ProgramKey& k) {
   if (k.phong && k.lit) return generate_phong(k);
   Sources s;
   const std::string q = k.flat ? "flat " : "";
-  std::string v = header(k) + "layout(location = 0) in vec4 a_position;\n";
+  std::string v = header(k) + unfilled_vertex_renames(k, colour_varyings(k)) + "layout(location = 0) in vec4 a_position;\n";
   if (k.lit) v += "layout(location = 1) in vec3 a_normal;\n";
   if (k.vertex_material)
     for (int f = 0; f < (k.two_side() ? 2 : 1); ++f)
@@ -328,6 +332,7 @@ Sources generate(const ProgramKey& k) {
   for (const std::string& o : outs) fr += q + "in vec4 " + o + ";\n";
   fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + feature_fragment_code(k) + "}\n";
   s.vertex = v, s.fragment = fr;
+  s.geometry = unfilled_geometry(k, colour_varyings(k));
   s.feedback = {"gl_Position", "v_front"};
   if (k.two_side()) s.feedback.push_back("v_back");
   return s;

@@ -31,6 +31,12 @@ struct ProgramKey {
   // glMaterial changed inside glBegin/glEnd: the material comes per vertex, as attributes
   // (SinkMaterial's layout, from kMaterial on), not uniforms. Lit only; never per fragment.
   bool vertex_material = false;
+  // One glPolygonMode pass drawing polygons as GL_LINE or GL_POINT (unfilled.h): the faces it
+  // draws (bit 0 front, bit 1 back) and the front face's winding; a geometry shader draws the
+  // boundary. 0: none (GL_FILL draws triangles as they are).
+  GLenum unfilled = 0;
+  unsigned unfilled_faces = 0;
+  bool front_cw = false;
 
   static ProgramKey of(const state::SinkState& s, bool phong = false);
   uint64_t packed() const;  // equal keys, equal numbers: the program cache's key
@@ -54,6 +60,7 @@ std::vector<Uniform> uniforms(const ProgramKey& k, const state::SinkState* s);
 
 struct Sources {
   std::string vertex, fragment;
+  std::string geometry;  // empty: none
   // What transform feedback records per vertex, in this order: gl_Position, then each varying.
   std::vector<std::string> feedback;
 };
