@@ -353,7 +353,17 @@ class Context {
   void sink_arrays(GLenum mode, GLint first, GLsizei count);
   void sink_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void sink_read_back();  // the sink's picture into fb_, before soft reads or writes it
-  bool sink_refuses(const char* what);  // a call a sink cannot draw: GL_INVALID_OPERATION, named once
+  // glDrawPixels and glBitmap while a sink draws: the sink's picture into fb_ for the call's
+  // life, and back to the sink after it (draw_sink.cpp).
+  class SinkPixels {
+   public:
+    explicit SinkPixels(Context& c);
+    ~SinkPixels();
+
+   private:
+    Context& c_;
+    bool on_;
+  };
   raster::Framebuffer fb_;
   // glClear waits here until something draws or reads: a triangle list clears band by band, on
   // the threads that draw the bands; anything else calls flush_clear() first.

@@ -2,9 +2,7 @@
 // sink draws with. Soft's vertex stage and rasterizer are not run for what a sink draws.
 #include "state/draw_sink.h"
 
-#include <cstdio>
-#include <mutex>
-#include <set>
+#include <algorithm>
 
 #include "state/client_arrays.h"
 #include "state/context.h"
@@ -123,19 +121,24 @@ void Context::sink_elements(GLenum mode, GLsizei count, GLenum type, const void*
   elements_.clear();
 }
 
+// The sink hands its picture top row first; fb_ keeps GL's rows, the bottom one first.
 void Context::sink_read_back() {
-  if (sink_) sink_->read_back(fb_.color.data(), fb_.width, fb_.height);
+  if (!sink_) return;
+  std::vector<uint8_t> top_first(fb_.color.size());
+  sink_->read_back(top_first.data(), fb_.width, fb_.height);
+  const size_t row = size_t(fb_.width) * 4;
+  for (int y = 0; y < fb_.height; ++y)
+    std::copy_n(&top_first[size_t(fb_.height - 1 - y) * row], row, &fb_.color[size_t(y) * row]);
 }
 
-bool Context::sink_refuses(const char* what) {
-  if (!sink_draws()) return false;
-  error(GL_INVALID_OPERATION);
-  static std::mutex m;
-  static std::set<std::string> named;
-  const std::lock_guard<std::mutex> lock(m);
-  if (named.insert(what).second)
-    std::fprintf(stderr, "ffcompat: %s is not supported by the GLSL backend: GL_INVALID_OPERATION, nothing drawn\n", what);
-  return true;
+Context::SinkPixels::SinkPixels(Context& c) : c_(c), on_(c.sink_draws()) {
+  if (!on_) return;
+  c.sink_read_back();
+  c.sink_->read_depth(c.fb_.depth.data(), c.fb_.width, c.fb_.height);
+}
+
+Context::SinkPixels::~SinkPixels() {
+  if (on_) c_.sink_->write_back(c_.fb_.color.data(), c_.fb_.depth.data(), c_.fb_.width, c_.fb_.height);
 }
 
 }  // namespace ffc::state

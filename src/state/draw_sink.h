@@ -84,9 +84,13 @@ class DrawSink {
   // glClear's mask (colour and depth; the others have no buffer here).
   virtual void clear(const SinkState& s, GLbitfield mask) = 0;
   // glReadPixels reads soft's framebuffer: the sink copies its colour buffer there first (RGBA8,
-  // top row first, as raster::Framebuffer keeps it). glDrawPixels and glBitmap are refused
-  // (GL_INVALID_OPERATION and one line naming them) while a sink draws.
+  // top row first, as raster::Framebuffer keeps it).
   virtual void read_back(uint8_t* rgba, int width, int height) = 0;
+  // glDrawPixels and glBitmap are soft's: the sink's colour and depth copied into soft's
+  // framebuffer, soft draws there, and the result goes back to the sink: these two take GL's rows
+  // (the bottom one first, as raster::Framebuffer keeps them), depth as 24-bit values.
+  virtual void read_depth(uint32_t* depth, int width, int height) = 0;
+  virtual void write_back(const uint8_t* rgba, const uint32_t* depth, int width, int height) = 0;
 };
 
 }  // namespace ffc::state

@@ -264,6 +264,14 @@ TEST(GlslBackend, ReadPixelsReadsTheShadersPicture) {
   uint8_t px[4] = {};
   glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
   EXPECT_EQ((std::vector<int>{px[0], px[1], px[2], px[3]}), (std::vector<int>{0, 255, 0, 255}));
+  // GL's rows, the bottom one first (they once came upside down).
+  glColor3f(1, 0, 0);
+  glRectf(-1, -1, 1, 0);  // the bottom half
+  uint8_t low[4] = {}, high[4] = {};
+  glReadPixels(2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, low);
+  glReadPixels(2, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, high);
+  EXPECT_EQ(low[0], 255);
+  EXPECT_EQ(high[0], 0);
 }
 
 }  // namespace

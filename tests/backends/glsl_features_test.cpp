@@ -1,7 +1,7 @@
 // The GLSL backend's fixed functions after lighting, each against Mesa's fixed-function pipeline
 // on the same pictures (within one 8-bit step) and against the rule GL states where the rule
 // decides a pixel outright: the alpha test, fog, polygon offset, glMaterial between glBegin and
-// glEnd, glPolygonMode.
+// glEnd, glPolygonMode, glDrawPixels and glBitmap.
 #include <gtest/gtest.h>
 
 #ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
@@ -358,6 +358,45 @@ TEST(GlslFeatures, LineModeQuadHasNoDiagonal) {
   EXPECT_EQ(inside, 0);  // no diagonal
   EXPECT_GE(lit, 4 * 15);  // the four sides, 16 pixels each less the shared corners' ends
   EXPECT_EQ(rgba(p.glsl, 16, 16)[0], 0);
+}
+
+// A depth-tested quad, an image and a bitmap over it through the raster position (with blending
+// and the alpha test on the image), then a quad behind the first: the depth buffer must have come
+// through glDrawPixels unchanged for it to stay hidden.
+void pixels_and_bitmaps(bool depth_test_pixels) {
+  glClearColor(0.2f, 0.2f, 0.2f, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glColor3f(0.8f, 0.3f, 0.1f);
+  glRectf(-0.6f, -0.6f, 0.2f, 0.2f);  // z = 0
+  std::vector<uint8_t> image(20 * 12 * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = uint8_t((i * 37) % 256);
+  if (!depth_test_pixels) glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glRasterPos3f(-0.3f, -0.1f, 0.5f);
+  glDrawPixels(20, 12, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  glDisable(GL_BLEND);
+  static const GLubyte bits[16] = {0x81, 0x42, 0x24, 0x18, 0x18, 0x24, 0x42, 0x81,
+                                   0xFF, 0x00, 0xF0, 0x0F, 0xAA, 0x55, 0x3C, 0xC3};
+  glColor3f(0.1f, 0.9f, 0.4f);
+  glRasterPos2f(0.3f, 0.3f);
+  for (int k = 0; k < 3; ++k) glBitmap(8, 16, 0, 0, 9, 2, bits);
+  glEnable(GL_DEPTH_TEST);
+  glColor3f(0.2f, 0.3f, 0.9f);
+  glBegin(GL_QUADS);  // behind the first quad (z = -0.5 is farther): hidden where they overlap
+  glVertex3f(-0.4f, -0.4f, -0.5f), glVertex3f(0.7f, -0.4f, -0.5f), glVertex3f(0.7f, 0.7f, -0.5f), glVertex3f(-0.4f, 0.7f, -0.5f);
+  glEnd();
+}
+
+TEST(GlslFeatures, DrawPixelsAndBitmapAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  for (bool depth_test : {false, true}) {
+    SCOPED_TRACE(depth_test ? "depth-tested pixels" : "pixels without the depth test");
+    const Pictures p = draw_both(64, 64, [&] { pixels_and_bitmaps(depth_test); });
+    expect_as_mesa(p);
+    // The first quad's colour where the far quad overlaps it and nothing else drew (lower left).
+    EXPECT_EQ(rgba(p.glsl, 14, 48), (std::vector<int>{204, 76, 26, 255}));
+  }
 }
 
 }  // namespace

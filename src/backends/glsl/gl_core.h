@@ -22,6 +22,9 @@ namespace ffc::glsl {
   X(decltype(&::glDrawElements), DrawElements) X(decltype(&::glPolygonOffset), PolygonOffset)           \
   X(decltype(&::glGenTextures), GenTextures) X(decltype(&::glBindTexture), BindTexture)                   \
   X(decltype(&::glDeleteTextures), DeleteTextures) X(PFNGLTEXBUFFERPROC, TexBuffer)                        \
+  X(decltype(&::glTexImage2D), TexImage2D) X(decltype(&::glTexParameteri), TexParameteri)                 \
+  X(decltype(&::glGetIntegerv), GetIntegerv) X(decltype(&::glDrawArrays), DrawArrays)                     \
+  X(PFNGLACTIVETEXTUREPROC, ActiveTexture) X(PFNGLUNIFORM1IPROC, Uniform1i)                               \
   X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate) X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate) \
   X(PFNGLBLENDCOLORPROC, BlendColor)                                                                      \
   X(PFNGLCREATESHADERPROC, CreateShader) X(PFNGLSHADERSOURCEPROC, ShaderSource)                           \

@@ -65,7 +65,7 @@ Renderer::Renderer(const CoreGl& gl) : gl_(gl) {
 
 Renderer::~Renderer() {
   for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
-  materials_.destroy(gl_), edges_.destroy(gl_);
+  materials_.destroy(gl_), edges_.destroy(gl_), pixels_.destroy(gl_);
   const GLuint b[3] = {vbo_, ebo_, tfb_};
   gl_.DeleteBuffers(3, b);
   gl_.DeleteVertexArrays(1, &vao_);

@@ -11,6 +11,7 @@
 
 #include "backends/glsl/gl_core.h"
 #include "backends/glsl/material_stream.h"
+#include "backends/glsl/pixel_write.h"
 #include "backends/glsl/shader_gen.h"
 #include "backends/glsl/unfilled.h"
 #include "state/draw_sink.h"
@@ -52,6 +53,10 @@ class Renderer final : public state::DrawSink {
             const uint32_t* indices, size_t index_count) override;
   void clear(const state::SinkState& s, GLbitfield mask) override;
   void read_back(uint8_t* rgba, int width, int height) override;
+  void read_depth(uint32_t* depth, int width, int height) override { glsl::read_depth(gl_, depth, width, height); }
+  void write_back(const uint8_t* rgba, const uint32_t* depth, int width, int height) override {
+    pixels_.write(gl_, rgba, depth, width, height);
+  }
 
   void set_capture(bool on) { capture_ = on; }
   void set_phong(bool on) { phong_ = on; }  // lit smooth draws lit per fragment
@@ -84,6 +89,7 @@ class Renderer final : public state::DrawSink {
   std::set<std::string> unsupported_;
   MaterialStream materials_;  // glMaterial inside glBegin/glEnd (material_stream.h)
   EdgeStream edges_;          // glPolygonMode's boundary flags (unfilled.h)
+  PixelWriter pixels_;        // glDrawPixels and glBitmap (pixel_write.h)
 };
 
 }  // namespace ffc::glsl
