@@ -99,8 +99,7 @@ void fog_scene(GLenum mode, GLenum source, GLenum shade, bool lit) {
   glFrustum(-1, 1, -1, 1, 1, 20);
   glMatrixMode(GL_MODELVIEW);
   glShadeModel(shade);
-  glEnable(GL_FOG);
-  glFogi(GL_FOG_MODE, GLint(mode));
+  if (mode) glEnable(GL_FOG), glFogi(GL_FOG_MODE, GLint(mode));  // 0: no fog
   const float fog_color[4] = {0.8f, 0.7f, 0.6f, 1};
   glFogfv(GL_FOG_COLOR, fog_color);
   glFogf(GL_FOG_DENSITY, 0.15f), glFogf(GL_FOG_START, 2), glFogf(GL_FOG_END, 12);
@@ -133,6 +132,23 @@ TEST(GlslFeatures, FogEveryModeAsMesa) {
                                           << shade << (lit ? " lit" : " unlit"));
           expect_as_mesa(draw_both(64, 64, [&] { fog_scene(mode, source, shade, lit); }));
         }
+}
+
+// Per-fragment lighting (glsl-phong) carries the same fog and alpha test: its programs compile,
+// draw, and the fog changes the picture.
+TEST(GlslFeatures, PhongProgramsCarryFogAndAlphaTest) {
+  if (!egl_here()) GTEST_SKIP();
+  backends::GlslBackend fogged(true), clear(true);
+  fogged.begin(64, 64), clear.begin(64, 64);
+  auto scene = [](GLenum fog) {
+    glEnable(GL_ALPHA_TEST), glAlphaFunc(GL_GREATER, 0.1f);
+    fog_scene(fog, GL_FRAGMENT_DEPTH, GL_SMOOTH, true);
+  };
+  fogged.resume(), scene(GL_EXP2);
+  const image::Image a = fogged.read();
+  clear.resume(), scene(0);
+  EXPECT_GT(image::compare(a, clear.read()).max_diff, 20);
+  EXPECT_EQ(fogged.renderer()->stats().draws, 3u);  // the floor, the line, the points
 }
 
 // Linear fog from 2 to 12: a black quad facing the eye at depth 7 is half fogged, every pixel of
