@@ -42,6 +42,9 @@ SinkState Context::sink_state() {
   s.offset_line = enabled_state(GL_POLYGON_OFFSET_LINE) == 1, s.offset_point = enabled_state(GL_POLYGON_OFFSET_POINT) == 1;
   s.offset_factor = offset_factor_, s.offset_units = offset_units_;
   s.polygon_mode[0] = polygon_mode_[0], s.polygon_mode[1] = polygon_mode_[1];
+  const bool line_or_point_offset = (polygon_mode_[0] == GL_LINE || polygon_mode_[1] == GL_LINE) && s.offset_line;
+  if (line_or_point_offset || ((polygon_mode_[0] == GL_POINT || polygon_mode_[1] == GL_POINT) && s.offset_point))
+    s.unsupported.push_back("polygon offset of GL_LINE or GL_POINT polygons");
   if (frag_.line_stipple) s.unsupported.push_back("line stipple");
   if (precision_ == Precision::Double) s.unsupported.push_back("double precision (the shaders are float)");
   return s;

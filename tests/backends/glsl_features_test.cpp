@@ -354,6 +354,20 @@ TEST(GlslFeatures, PolygonModesAsMesa) {
     }
 }
 
+// What the passes do not draw is said: polygon offset of GL_LINE polygons.
+TEST(GlslFeatures, LineModeOffsetIsNamedAsNotDrawn) {
+  if (!egl_here()) GTEST_SKIP();
+  backends::GlslBackend b;
+  b.begin(8, 8);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glEnable(GL_POLYGON_OFFSET_LINE);
+  glRectf(-0.5f, -0.5f, 0.5f, 0.5f);
+  const std::set<std::string>& named = b.renderer()->unsupported();
+  EXPECT_EQ(named.count("polygon offset of GL_LINE or GL_POINT polygons"), 1u);
+  glDisable(GL_POLYGON_OFFSET_LINE);
+  EXPECT_EQ(named.size(), 1u);
+}
+
 // By the rule: a quad drawn as GL_LINE shows its four sides and not its diagonal.
 TEST(GlslFeatures, LineModeQuadHasNoDiagonal) {
   if (!egl_here()) GTEST_SKIP();
