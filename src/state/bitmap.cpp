@@ -92,7 +92,8 @@ std::vector<GLubyte> Context::pack_bitmap(GLsizei w, GLsizei h, const GLubyte* b
 
 void Context::Bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove, float ymove, const GLubyte* bits,
                      bool packed) {
-  if (!outside_begin_end() || sink_refuses("glBitmap")) return;  // draw_sink.cpp
+  if (!outside_begin_end()) return;
+  const SinkPixels through_sink(*this);  // draw_sink.cpp: soft draws into the sink's picture
   flush_stored();  // Mesa: FLUSH_VERTICES first
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);

@@ -351,11 +351,25 @@ class Context {
   bool sink_draws() const { return sink_ && render_mode_ == GL_RENDER; }
   void sink_vertex(const glm::dvec4& obj);
   void sink_end();
+  std::vector<SinkMaterial> sink_materials_;  // per vertex, once glMaterial changed inside glBegin
+  bool sink_material_varies_ = false;
+  SinkMaterial sink_material() const;
+  void sink_material_changes();  // glMaterial inside glBegin/glEnd (draw_sink.cpp)
   void sink_fetch(GLint first, GLsizei count);  // array elements into sink_verts_
   void sink_arrays(GLenum mode, GLint first, GLsizei count);
   void sink_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void sink_read_back();  // the sink's picture into fb_, before soft reads or writes it
-  bool sink_refuses(const char* what);  // a call a sink cannot draw: GL_INVALID_OPERATION, named once
+  // glDrawPixels and glBitmap while a sink draws: the sink's picture into fb_ for the call's
+  // life, and back to the sink after it (draw_sink.cpp).
+  class SinkPixels {
+   public:
+    explicit SinkPixels(Context& c);
+    ~SinkPixels();
+
+   private:
+    Context& c_;
+    bool on_;
+  };
   raster::Framebuffer fb_;
   // glClear waits here until something draws or reads: a triangle list clears band by band, on
   // the threads that draw the bands; anything else calls flush_clear() first.

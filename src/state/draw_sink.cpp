@@ -2,10 +2,8 @@
 // sink draws with. Soft's vertex stage and rasterizer are not run for what a sink draws.
 #include "state/draw_sink.h"
 
-#include <cstdio>
+#include <algorithm>
 #include <cstring>
-#include <mutex>
-#include <set>
 
 #include "state/client_arrays.h"
 #include "state/context.h"
@@ -40,10 +38,20 @@ SinkState Context::sink_state() {
   s.point_size = point_size_, s.line_width = line_width_;
   s.fragment = &frag_;
   s.clear_color = clear_color_, s.clear_depth = clear_depth_;
-  if (fog_) s.unsupported.push_back("fog");
-  if (offset_fill_) s.unsupported.push_back("polygon offset");
-  if (unfilled()) s.unsupported.push_back("glPolygonMode other than GL_FILL");
-  if (frag_.alpha_test) s.unsupported.push_back("the alpha test");
+  raster::State rs;
+  fog_raster_state(rs);
+  s.fog = fog_, s.fog_mode = fog_mode_, s.fog_coord_src = fog_coord_src_;
+  s.fog_params = glm::vec4(rs.fog_params[0], rs.fog_params[1], rs.fog_params[2], rs.fog_params[3]);
+  s.fog_color = glm::vec3(fog_color_);
+  s.offset_fill = offset_fill_;
+  s.offset_line = enabled_state(GL_POLYGON_OFFSET_LINE) == 1, s.offset_point = enabled_state(GL_POLYGON_OFFSET_POINT) == 1;
+  s.offset_factor = offset_factor_, s.offset_units = offset_units_;
+  s.polygon_mode[0] = polygon_mode_[0], s.polygon_mode[1] = polygon_mode_[1];
+  s.pass_mode = 0, s.pass_faces = 3;  // not split: the sink splits by mode itself
+  s.vertex_materials = nullptr;        // sink_end sets it when glMaterial varied inside glBegin
+  const bool line_or_point_offset = (polygon_mode_[0] == GL_LINE || polygon_mode_[1] == GL_LINE) && s.offset_line;
+  if (line_or_point_offset || ((polygon_mode_[0] == GL_POINT || polygon_mode_[1] == GL_POINT) && s.offset_point))
+    s.unsupported.push_back("polygon offset of GL_LINE or GL_POINT polygons");
   if (frag_.line_stipple) s.unsupported.push_back("line stipple");
   if (precision_ == Precision::Double) s.unsupported.push_back("double precision (the shaders are float)");
   return s;
@@ -51,11 +59,37 @@ SinkState Context::sink_state() {
 
 void Context::sink_vertex(const glm::dvec4& obj) {
   sink_verts_.push_back({glm::vec4(obj), glm::vec3(normal_), glm::vec4(color_)});
+  if (sink_material_varies_) sink_materials_.push_back(sink_material());
+}
+
+SinkMaterial Context::sink_material() const {
+  SinkMaterial m;
+  for (int f = 0; f < 2; ++f) {
+    const lighting::MaterialParams& p = materials_[f];
+    m.face[f][0] = glm::vec4(glm::vec3(p.ambient), float(p.shininess));
+    m.face[f][1] = glm::vec4(p.diffuse), m.face[f][2] = glm::vec4(p.specular), m.face[f][3] = glm::vec4(p.emission);
+  }
+  return m;
+}
+
+// glMaterial between glBegin and glEnd while a sink draws: from here on each vertex carries the
+// material as it stood at its glVertex (Mesa's vbo makes them per-vertex attributes too); the
+// vertices before it, the material as it was.
+void Context::sink_material_changes() {
+  if (sink_material_varies_) return;
+  sink_material_varies_ = true;
+  sink_materials_.assign(sink_verts_.size(), sink_material());
 }
 
 void Context::sink_end() {
-  if (!sink_verts_.empty()) sink_->draw(sink_state(), prim_mode_, sink_verts_.data(), sink_verts_.size(), nullptr, 0);
+  if (!sink_verts_.empty()) {
+    SinkState s = sink_state();
+    if (sink_material_varies_) s.vertex_materials = &sink_materials_;
+    sink_->draw(s, prim_mode_, sink_verts_.data(), sink_verts_.size(), nullptr, 0);
+  }
   sink_verts_.clear();
+  sink_materials_.clear();
+  sink_material_varies_ = false;
 }
 
 namespace {
@@ -128,19 +162,24 @@ void Context::sink_elements(GLenum mode, GLsizei count, GLenum type, const void*
   elements_.clear();
 }
 
+// The sink hands its picture top row first; fb_ keeps GL's rows, the bottom one first.
 void Context::sink_read_back() {
-  if (sink_) sink_->read_back(fb_.color.data(), fb_.width, fb_.height);
+  if (!sink_) return;
+  std::vector<uint8_t> top_first(fb_.color.size());
+  sink_->read_back(top_first.data(), fb_.width, fb_.height);
+  const size_t row = size_t(fb_.width) * 4;
+  for (int y = 0; y < fb_.height; ++y)
+    std::copy_n(&top_first[size_t(fb_.height - 1 - y) * row], row, &fb_.color[size_t(y) * row]);
 }
 
-bool Context::sink_refuses(const char* what) {
-  if (!sink_draws()) return false;
-  error(GL_INVALID_OPERATION);
-  static std::mutex m;
-  static std::set<std::string> named;
-  const std::lock_guard<std::mutex> lock(m);
-  if (named.insert(what).second)
-    std::fprintf(stderr, "ffcompat: %s is not supported by the GLSL backend: GL_INVALID_OPERATION, nothing drawn\n", what);
-  return true;
+Context::SinkPixels::SinkPixels(Context& c) : c_(c), on_(c.sink_draws()) {
+  if (!on_) return;
+  c.sink_read_back();
+  c.sink_->read_depth(c.fb_.depth.data(), c.fb_.width, c.fb_.height);
+}
+
+Context::SinkPixels::~SinkPixels() {
+  if (on_) c_.sink_->write_back(c_.fb_.color.data(), c_.fb_.depth.data(), c_.fb_.width, c_.fb_.height);
 }
 
 }  // namespace ffc::state

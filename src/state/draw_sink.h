@@ -30,6 +30,13 @@ struct SinkVertex {
   glm::vec4 color;
 };
 
+// The material of both faces at one vertex, for a glBegin/glEnd whose glMaterial calls change it
+// between vertices: per face ambient (its alpha holding the shininess), diffuse, specular and
+// emission, as the GLSL backend streams them (32 floats).
+struct SinkMaterial {
+  glm::vec4 face[2][4];
+};
+
 // Every value of the snapshot but the list of names: trivially copyable, so that the GLSL
 // backend can compare two draws' states byte by byte (its uniform cache, uniform_cache.h) and
 // reuse the uniforms it made for equal bytes. A value that feeds a uniform belongs here (or behind
@@ -54,6 +61,24 @@ struct SinkValues {
   const FragmentState* fragment = nullptr;  // scissor, blending, masks, alpha test, stipple
   glm::vec4 clear_color{0};
   double clear_depth = 1;
+  // Fog (state/fog.cpp): the mode, the coordinate's source, Mesa's optimized parameters
+  // (raster::State::fog_params: linear's scale and offset, exp's and exp2's density over ln 2 and
+  // sqrt(ln 2)) and the colour.
+  bool fog = false;
+  GLenum fog_mode = GL_EXP, fog_coord_src = GL_FRAGMENT_DEPTH;
+  glm::vec4 fog_params{0};
+  glm::vec3 fog_color{0};
+  // Polygon offset (glPolygonOffset's values as given; the sink's GL scales the units itself).
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0, offset_units = 0;
+  // glPolygonMode per face (front, back). A sink drawing the faces of one mode at a time sets
+  // pass_mode to it and pass_faces to the faces it covers (bit 0 front, bit 1 back); 0: not split.
+  GLenum polygon_mode[2] = {GL_FILL, GL_FILL};
+  GLenum pass_mode = 0;
+  unsigned pass_faces = 3;
+  // One material per vertex when glMaterial changed it inside this glBegin/glEnd; null otherwise
+  // (`materials` then holds for every vertex).
+  const std::vector<SinkMaterial>* vertex_materials = nullptr;
 };
 
 struct SinkState : SinkValues {
@@ -73,9 +98,13 @@ class DrawSink {
   // glClear's mask (colour and depth; the others have no buffer here).
   virtual void clear(const SinkState& s, GLbitfield mask) = 0;
   // glReadPixels reads soft's framebuffer: the sink copies its colour buffer there first (RGBA8,
-  // top row first, as raster::Framebuffer keeps it). glDrawPixels and glBitmap are refused
-  // (GL_INVALID_OPERATION and one line naming them) while a sink draws.
+  // top row first, as raster::Framebuffer keeps it).
   virtual void read_back(uint8_t* rgba, int width, int height) = 0;
+  // glDrawPixels and glBitmap are soft's: the sink's colour and depth copied into soft's
+  // framebuffer, soft draws there, and the result goes back to the sink: these two take GL's rows
+  // (the bottom one first, as raster::Framebuffer keeps them), depth as 24-bit values.
+  virtual void read_depth(uint32_t* depth, int width, int height) = 0;
+  virtual void write_back(const uint8_t* rgba, const uint32_t* depth, int width, int height) = 0;
 };
 
 }  // namespace ffc::state

@@ -117,7 +117,7 @@ void Context::LightModeli(GLenum pname, GLint param) {
 
 bool Context::set_material(GLenum face, GLenum pname, const double* v) {
   if (!valid_face(face)) return error(GL_INVALID_ENUM), false;
-  if (in_begin_ && sink_refuses("glMaterial between glBegin and glEnd")) return false;  // draw_sink.cpp
+  if (in_begin_ && sink_draws()) sink_material_changes();  // draw_sink.cpp
   leave_triangle_list();  // the vertices so far are lit with the material as it was
   switch (pname) {
     case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE:

@@ -274,7 +274,8 @@ bool known_type(GLenum t) {
 }  // namespace
 
 void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
-  if (!outside_begin_end() || sink_refuses("glDrawPixels")) return;  // draw_sink.cpp
+  if (!outside_begin_end()) return;
+  const SinkPixels through_sink(*this);  // draw_sink.cpp: soft draws into the sink's picture
   flush_stored();  // Mesa: FLUSH_VERTICES before anything else
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);

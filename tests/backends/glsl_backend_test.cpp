@@ -1,7 +1,7 @@
 // The GLSL backend against Mesa: every built-in configuration and shipped scene within 1e-5 of
 // Mesa's lit vertex colours (the shaders' outputs through transform feedback against Mesa's
 // feedback) and within one 8-bit step on every pixel; the program cache; flat shading's provoking
-// vertices; what the backend refuses.
+// vertices; glReadPixels.
 #include <gtest/gtest.h>
 
 #ifdef FFCOMPAT_WITH_GLSL  // a build with EGL
@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "backends/glsl/glsl_backend.h"
+#include "egl_here.h"
 #include "backends/glsl/vertex_compare.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
@@ -20,12 +21,7 @@
 namespace ffc {
 namespace {
 
-bool egl_here() {
-  std::string why;
-  if (platform::EglContext::available(&why)) return true;
-  std::fprintf(stderr, "no EGL display: %s\n", why.c_str());
-  return false;
-}
+using test::egl_here;
 
 struct Case {
   std::string name;
@@ -259,21 +255,6 @@ TEST(GlslBackend, FlatShadingTakesGlsProvokingVertex) {
   }
 }
 
-TEST(GlslBackend, MaterialInsideBeginEndIsRefusedAndChangesNothing) {
-  if (!egl_here()) GTEST_SKIP();
-  backends::GlslBackend b;
-  b.begin(8, 8);
-  const float red[4] = {1, 0, 0, 1};
-  glBegin(GL_TRIANGLES);
-  glMaterialfv(GL_FRONT, GL_DIFFUSE, red);
-  glEnd();
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  float d[4];
-  glGetMaterialfv(GL_FRONT, GL_DIFFUSE, d);
-  EXPECT_FLOAT_EQ(d[0], 0.8f);  // GL's default, unchanged
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-}
-
 TEST(GlslBackend, ReadPixelsReadsTheShadersPicture) {
   if (!egl_here()) GTEST_SKIP();
   backends::GlslBackend b;
@@ -283,6 +264,14 @@ TEST(GlslBackend, ReadPixelsReadsTheShadersPicture) {
   uint8_t px[4] = {};
   glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
   EXPECT_EQ((std::vector<int>{px[0], px[1], px[2], px[3]}), (std::vector<int>{0, 255, 0, 255}));
+  // GL's rows, the bottom one first (they once came upside down).
+  glColor3f(1, 0, 0);
+  glRectf(-1, -1, 1, 0);  // the bottom half
+  uint8_t low[4] = {}, high[4] = {};
+  glReadPixels(2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, low);
+  glReadPixels(2, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, high);
+  EXPECT_EQ(low[0], 255);
+  EXPECT_EQ(high[0], 0);
 }
 
 }  // namespace

@@ -22,8 +22,9 @@ struct DrawList {
 };
 
 // The list for `n` vertices of `mode` (elements[k] names vertex k when elements is not null) out of
-// `vertices` (every element below it).
+// `vertices` (every element below it). With `edges` (an unfilled glPolygonMode pass, unfilled.h)
+// every mode is decomposed, so that each triangle gets its boundary flags.
 DrawList listed(GLenum mode, const uint32_t* elements, size_t n, size_t vertices, const SplitRule& rule,
-                std::vector<uint32_t>& scratch);
+                std::vector<uint32_t>& scratch, std::vector<uint8_t>* edges = nullptr);
 
 }  // namespace ffc::glsl

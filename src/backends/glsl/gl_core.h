@@ -21,6 +21,11 @@ namespace ffc::glsl {
   X(decltype(&::glFinish), Finish) X(decltype(&::glGetError), GetError)                                   \
   X(decltype(&::glDrawElements), DrawElements) X(decltype(&::glDrawArrays), DrawArrays)                   \
   X(decltype(&::glGetIntegerv), GetIntegerv) X(PFNGLDRAWRANGEELEMENTSPROC, DrawRangeElements)           \
+  X(decltype(&::glPolygonOffset), PolygonOffset)                                                          \
+  X(decltype(&::glGenTextures), GenTextures) X(decltype(&::glBindTexture), BindTexture)                   \
+  X(decltype(&::glDeleteTextures), DeleteTextures) X(PFNGLTEXBUFFERPROC, TexBuffer)                        \
+  X(decltype(&::glTexImage2D), TexImage2D) X(decltype(&::glTexParameteri), TexParameteri)                 \
+  X(PFNGLACTIVETEXTUREPROC, ActiveTexture) X(PFNGLUNIFORM1IPROC, Uniform1i)                               \
   X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate) X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate) \
   X(PFNGLBLENDCOLORPROC, BlendColor)                                                                      \
   X(PFNGLCREATESHADERPROC, CreateShader) X(PFNGLSHADERSOURCEPROC, ShaderSource)                           \

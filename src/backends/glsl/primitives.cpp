@@ -4,11 +4,27 @@
 
 namespace ffc::glsl {
 
-GLenum decompose(GLenum mode, const uint32_t* e, size_t n, const SplitRule& rule, std::vector<uint32_t>& out) {
+GLenum decompose(GLenum mode, const uint32_t* e, size_t n, const SplitRule& rule, std::vector<uint32_t>& out,
+                 std::vector<uint8_t>* edges) {
   out.clear();
+  if (edges) edges->clear();
   auto at = [e](size_t k) { return e ? e[k] : uint32_t(k); };
+  // Whether vertices j and k (positions in the draw) are neighbours on their polygon's boundary.
+  auto boundary = [mode, n](size_t j, size_t k) {
+    const size_t lo = j < k ? j : k, hi = j < k ? k : j;
+    switch (mode) {
+      case GL_QUADS: return hi - lo == 1 || hi - lo == 3;  // within one quad: not the diagonal
+      case GL_QUAD_STRIP: return hi - lo == 2 || (hi - lo == 1 && lo % 2 == 0);  // the sides and the rungs
+      case GL_POLYGON: return hi - lo == 1 || (lo == 0 && hi == n - 1);
+      default: return true;
+    }
+  };
   auto put = [&](std::initializer_list<size_t> ks) {
     for (size_t k : ks) out.push_back(at(k));
+    if (edges && ks.size() == 3) {
+      const size_t* t = ks.begin();
+      edges->push_back(uint8_t(boundary(t[0], t[1]) | boundary(t[1], t[2]) << 1 | boundary(t[2], t[0]) << 2));
+    }
   };
   switch (mode) {
     case GL_POINTS:

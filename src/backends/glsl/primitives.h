@@ -16,11 +16,16 @@ struct SplitRule {
   bool flat = false;         // GL_FLAT
   bool from_elements = false;  // glDrawElements
   bool any_outside = false;  // a vertex outside the view volume: Mesa's draw pipeline splits the quads
-  bool pipeline = false;     // as Mesa's draw pipeline assembles for feedback (the vertex check)
+  bool pipeline = false;     // as Mesa's draw pipeline assembles: feedback (the vertex check), glPolygonMode
 };
 
 // The list for `count` vertices of `mode` (elements[k] names vertex k when elements is not null):
 // GL_POINTS, GL_LINES or GL_TRIANGLES, with the vertex numbers in `out`.
-GLenum decompose(GLenum mode, const uint32_t* elements, size_t count, const SplitRule& rule, std::vector<uint32_t>& out);
+// With `edges`: per triangle, which of its edges (bit 0: first to second vertex, bit 1: second to
+// third, bit 2: third to first) lie on the boundary of the GL polygon it came from: a quad's or a
+// polygon's inner diagonals do not (glPolygonMode GL_LINE and GL_POINT draw only the boundary, as
+// GL's edge flags say); every edge of a triangle, strip or fan does.
+GLenum decompose(GLenum mode, const uint32_t* elements, size_t count, const SplitRule& rule, std::vector<uint32_t>& out,
+                 std::vector<uint8_t>* edges = nullptr);
 
 }  // namespace ffc::glsl

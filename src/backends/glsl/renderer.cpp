@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "backends/glsl/raster_features.h"
 #include "raster/raster.h"
 
 namespace ffc::glsl {
@@ -58,6 +59,7 @@ Renderer::Renderer(const CoreGl& gl) : gl_(gl), vertices_(gl), elements_(gl, GL_
 
 Renderer::~Renderer() {
   for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
+  materials_.destroy(gl_), edges_.destroy(gl_), pixels_.destroy(gl_);
   gl_.DeleteBuffers(1, &tfb_);
   gl_.DeleteVertexArrays(1, &vao_);
 }
@@ -88,6 +90,10 @@ Renderer::Program& Renderer::program_for(const ProgramKey& k) {
   p.id = gl_.CreateProgram();
   gl_.AttachShader(p.id, vs);
   gl_.AttachShader(p.id, fs);
+  if (!p.info.sources.geometry.empty()) {
+    const GLuint gs = compile(gl_, GL_GEOMETRY_SHADER, p.info.sources.geometry);
+    gl_.AttachShader(p.id, gs), gl_.DeleteShader(gs);
+  }
   std::vector<const char*> names;
   for (const std::string& n : p.info.sources.feedback) names.push_back(n.c_str());
   gl_.TransformFeedbackVaryings(p.id, GLsizei(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
@@ -157,6 +163,7 @@ void Renderer::apply(const state::SinkState& s) {
   gl_.PointSize(s.point_size);
   gl_.LineWidth(s.line_width);
   apply_fragment(s);
+  apply_raster_features(gl_, s);
   const state::FragmentState& f = *s.fragment;
   if (f.blend) {
     gl_.Enable(GL_BLEND);
@@ -170,11 +177,13 @@ void Renderer::apply(const state::SinkState& s) {
 
 void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVertex* v, size_t count,
                     const uint32_t* indices, size_t index_count) {
+  if (needs_polygon_passes(s, mode) && polygon_passes(s, mode, [&](const state::SinkState& pass) { draw(pass, mode, v, count, indices, index_count); }))
+    return;
   const size_t n = indices ? index_count : count;
   SplitRule rule;
-  rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_;
+  rule.flat = s.flat, rule.from_elements = indices != nullptr, rule.pipeline = capture_ || s.pass_mode;
   if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
-  const DrawList list = listed(mode, indices, n, count, rule, list_);
+  const DrawList list = listed(mode, indices, n, count, rule, list_, edges_.flags(s));
   if (list.count == 0) return;
   ++stats_.draws;
   Program& p = program_for(ProgramKey::of(s, phong_));
@@ -184,6 +193,8 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   apply(s);
   vertices_.upload(p.format, v, count);
   if (list.indices) elements_.write(list.indices, list.count * sizeof(uint32_t));
+  materials_.stream(gl_, s.vertex_materials);
+  edges_.stream(gl_, s);
   if (capture_) return capture_draw(s, list, p);
   submit(list);
 }
@@ -231,11 +242,11 @@ void Renderer::clear(const state::SinkState& s, GLbitfield mask) {
 
 void Renderer::read_back(uint8_t* rgba, int width, int height) {
   const size_t row = size_t(width) * 4;
-  pixels_.resize(row * size_t(height));  // kept: no allocation after the first frame
+  read_rows_.resize(row * size_t(height));  // kept: no allocation after the first frame
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl_.ReadPixels(0, 0, width, height, read_format_, GL_UNSIGNED_BYTE, pixels_.data());
+  gl_.ReadPixels(0, 0, width, height, read_format_, GL_UNSIGNED_BYTE, read_rows_.data());
   for (int y = 0; y < height; ++y) {  // GL's bottom row first, to the top row first
-    const uint8_t* from = pixels_.data() + size_t(height - 1 - y) * row;
+    const uint8_t* from = read_rows_.data() + size_t(height - 1 - y) * row;
     uint8_t* to = rgba + size_t(y) * row;
     if (read_format_ == GL_RGBA) {
       std::memcpy(to, from, row);

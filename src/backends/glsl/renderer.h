@@ -13,7 +13,10 @@
 
 #include "backends/glsl/draw_list.h"
 #include "backends/glsl/gl_core.h"
+#include "backends/glsl/material_stream.h"
+#include "backends/glsl/pixel_write.h"
 #include "backends/glsl/shader_gen.h"
+#include "backends/glsl/unfilled.h"
 #include "backends/glsl/uniform_cache.h"
 #include "backends/glsl/vertex_stream.h"
 #include "state/draw_sink.h"
@@ -55,6 +58,10 @@ class Renderer final : public state::DrawSink {
             const uint32_t* indices, size_t index_count) override;
   void clear(const state::SinkState& s, GLbitfield mask) override;
   void read_back(uint8_t* rgba, int width, int height) override;
+  void read_depth(uint32_t* depth, int width, int height) override { glsl::read_depth(gl_, depth, width, height); }
+  void write_back(const uint8_t* rgba, const uint32_t* depth, int width, int height) override {
+    pixels_.write(gl_, rgba, depth, width, height);
+  }
 
   void set_capture(bool on) { capture_ = on; }
   void set_phong(bool on) { phong_ = on; }  // lit smooth draws lit per fragment
@@ -87,12 +94,15 @@ class Renderer final : public state::DrawSink {
   StreamBuffer elements_;  // the draw's list
   std::map<uint64_t, Program> programs_;
   std::vector<uint32_t> list_;    // decompose()'s lists, kept for the next draw
-  std::vector<uint8_t> pixels_;   // read_back's rows as GL reads them
+  std::vector<uint8_t> read_rows_;  // read_back's rows as GL reads them
   GLenum read_format_ = GL_RGBA;  // the colour buffer's own order, read without conversion
   bool capture_ = false, phong_ = false;
   std::vector<CapturedDraw> captured_;
   Stats stats_;
   std::set<std::string> unsupported_;
+  MaterialStream materials_;  // glMaterial inside glBegin/glEnd (material_stream.h)
+  EdgeStream edges_;          // glPolygonMode's boundary flags (unfilled.h)
+  PixelWriter pixels_;        // glDrawPixels and glBitmap (pixel_write.h)
 };
 
 }  // namespace ffc::glsl

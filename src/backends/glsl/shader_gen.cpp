@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "backends/glsl/shader_features.h"
+#include "backends/glsl/unfilled.h"
+
 namespace ffc::glsl {
 
 namespace {
@@ -49,18 +52,31 @@ struct UniformList {
 ProgramKey ProgramKey::of(const state::SinkState& s, bool phong) {
   ProgramKey k;
   k.lit = s.lighting;
-  k.phong = phong && s.lighting && !s.flat;  // GL_FLAT keeps one colour per primitive
+  k.vertex_material = s.lighting && s.vertex_materials;
+  unfilled_key(k, s);
+  // GL_FLAT keeps one colour per primitive; a material per vertex stays per vertex.
+  k.phong = phong && s.lighting && !s.flat && !k.vertex_material && !k.unfilled;
   k.key = s.lighting ? s.key : lighting::Key{};
   k.flat = s.flat;
   if (k.lit && k.key.color_material()) k.cm_faces = unsigned(s.model.cm_faces), k.cm_mode = s.model.cm_mode;
+  feature_key(k, s);
   return k;
 }
 
 uint64_t ProgramKey::packed() const {
   // Only the bits a program's code depends on: the shininess-0 bit changes no code here.
   const uint64_t extra = key.extra & ~(1u << lighting::Key::kShininessZero);
+  // Colour material's mode and fog's mode as small numbers (0 for none).
+  const GLenum cm_modes[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE};
+  uint64_t cm = 0;
+  for (uint64_t i = 0; i < 5; ++i)
+    if (cm_mode == cm_modes[i]) cm = i + 1;
+  const uint64_t fog_mode = fog == GL_LINEAR ? 1 : fog == GL_EXP ? 2 : fog == GL_EXP2 ? 3 : 0;
   return uint64_t(key.bits) | extra << 32 | uint64_t(lit) << 42 | uint64_t(flat) << 43 | uint64_t(cm_faces & 3) << 44 |
-         uint64_t(cm_mode & 0xFFFF) << 46 | uint64_t(phong) << 62;
+         cm << 46 | uint64_t(phong) << 49 | fog_mode << 50 | uint64_t(fog_depth) << 52 |
+         uint64_t((alpha_func - GL_NEVER) & 7) << 53 | uint64_t(vertex_material) << 56 |
+         uint64_t(unfilled == GL_LINE ? 1 : unfilled == GL_POINT ? 2 : 0) << 57 | uint64_t(unfilled_faces & 3) << 59 |
+         uint64_t(front_cw) << 61;
 }
 
 bool ProgramKey::needs_eye_position() const {
@@ -75,14 +91,16 @@ bool ProgramKey::needs_eye_position() const {
 std::vector<Uniform> uniforms(const ProgramKey& k, const state::SinkState* s) {
   UniformList u{s, {}};
   u.add("u_mvp", "mat4", 16, s ? glm::value_ptr(s->mvp) : nullptr);
+  if (k.needs_eye_position() || (k.fog && k.fog_depth))
+    u.add("u_modelview", "mat4", 16, s ? glm::value_ptr(s->modelview) : nullptr);
+  feature_uniforms(k, s, u.out);
   if (!k.lit) return u.out;
-  if (k.needs_eye_position()) u.add("u_modelview", "mat4", 16, s ? glm::value_ptr(s->modelview) : nullptr);
   const glm::mat3 inv = s ? glm::mat3(s->normal_inverse) : glm::mat3(1);
   u.add("u_normal_inverse", "mat3", 9, glm::value_ptr(inv));
   if (k.key.rescale() && !k.key.normalize()) u.scalar("u_rescale", s ? s->rescale : 0);
   u.vec3("u_global_ambient", s ? glm::dvec3(s->model.ambient) : glm::dvec3(0));
   const int faces = k.two_side() ? 2 : 1;
-  for (int f = 0; f < faces; ++f) {
+  for (int f = 0; f < faces && !k.vertex_material; ++f) {
     const lighting::MaterialParams m = s ? s->materials[f] : lighting::MaterialParams{};
     const std::string p = std::string("u_") + face_name(f) + "_";
     if (!tracks(k, f, GL_AMBIENT)) u.vec3(p + "ambient", m.ambient);
@@ -128,9 +146,14 @@ namespace {
 std::string face_code(const ProgramKey& k, int f) {
   const lighting::Key& key = k.key;
   const std::string p = std::string("u_") + face_name(f) + "_";
+  // A material parameter: the colour when colour material tracks it, else its uniform or, when
+  // the material comes per vertex, its attribute (a vec4 each).
+  const std::string src = k.vertex_material ? std::string("a_") + face_name(f) + "_" : p;
   auto mat = [&](GLenum what, const char* name) {
-    return tracks(k, f, what) ? std::string("a_color.rgb") : p + name + (what == GL_DIFFUSE ? ".rgb" : "");
+    return tracks(k, f, what) ? std::string("a_color.rgb")
+                              : src + name + (what == GL_DIFFUSE || k.vertex_material ? ".rgb" : "");
   };
+  const std::string shininess = k.vertex_material ? src + "ambient.a" : p + "shininess";
   std::string c;
   c += "  {  // the " + std::string(face_name(f)) + " face\n";
   c += std::string("    vec3 n = ") + (f == 0 ? "normal" : "-normal") + ";\n";
@@ -170,7 +193,7 @@ std::string face_code(const ProgramKey& k, int f) {
         c += indent + "  float hl = length(h);\n";
         c += indent + "  h = hl > 0.0 ? h / hl : vec3(0.0);\n";
       }
-      c += indent + "  vec3 s = power(max(0.0, dot(n, h)), " + p + "shininess) * (" + L("specular") + " * ms);\n";
+      c += indent + "  vec3 s = power(max(0.0, dot(n, h)), " + shininess + ") * (" + L("specular") + " * ms);\n";
       c += indent + (k.secondary() ? "  secondary += att * s;\n" : "  sum += s;\n");
       c += indent + "}\n";
     }
@@ -179,7 +202,7 @@ std::string face_code(const ProgramKey& k, int f) {
     c += "    }\n";
     ++n;
   }
-  const std::string alpha = tracks(k, f, GL_DIFFUSE) ? "a_color.a" : p + "diffuse.a";
+  const std::string alpha = tracks(k, f, GL_DIFFUSE) ? "a_color.a" : src + "diffuse.a";
   c += std::string("    v_") + face_name(f) + " = saturate(vec4(color, " + alpha + "));\n";
   if (k.secondary()) c += std::string("    v_") + face_name(f) + "_secondary = saturate(vec4(secondary, 0.0));\n";
   c += "  }\n";
@@ -265,15 +288,16 @@ Sources generate_phong(const ProgramKey& k) {
   Sources s;
   std::string v = header(k) + "layout(location = 0) in vec4 a_position;\nlayout(location = 1) in vec3 a_normal;\n"
                               "layout(location = 2) in vec4 a_color;\n";
-  v += declarations(k) + "out vec3 v_eye;\nout vec3 v_normal;\nout vec4 v_color;\n";
+  v += declarations(k) + fog_vertex_declarations(k) + "out vec3 v_eye;\nout vec3 v_normal;\nout vec4 v_color;\n";
   v += "void main() {\n  gl_Position = u_mvp * a_position;\n  v_eye = (u_modelview * a_position).xyz;\n";
-  v += eye_normal(k) + "  v_normal = normal;\n  v_color = a_color;\n}\n";
-  std::string fr = header(k) + declarations(k) + "in vec3 v_eye;\nin vec3 v_normal;\nin vec4 v_color;\n";
+  v += eye_normal(k) + "  v_normal = normal;\n  v_color = a_color;\n" + fog_vertex_code(k) + "}\n";
+  std::string fr = header(k) + declarations(k) + feature_fragment_declarations(k, false) +
+                   "in vec3 v_eye;\nin vec3 v_normal;\nin vec4 v_color;\n";
   fr += "out vec4 o_color;\nvoid main() {\n  vec3 eye = v_eye;\n  vec3 normal = v_normal;\n  vec4 a_color = v_color;\n";
   // Interpolation shortens unit normals between the vertices: made unit again (Phong's shading).
   fr += "  float len = length(normal);\n  normal = len > 0.0 ? normal / len : normal;\n";
   for (const std::string& o : colour_varyings(k)) fr += "  vec4 " + o + ";\n";
-  fr += lighting_code(k) + colour_sum(k) + "}\n";
+  fr += lighting_code(k) + colour_sum(k) + feature_fragment_code(k) + "}\n";
   s.vertex = v, s.fragment = fr;
   s.feedback = {"gl_Position", "v_color"};
   return s;
@@ -285,22 +309,30 @@ Sources generate(const ProgramKey& k) {
   if (k.phong && k.lit) return generate_phong(k);
   Sources s;
   const std::string q = k.flat ? "flat " : "";
-  std::string v = header(k) + "layout(location = 0) in vec4 a_position;\n";
+  std::string v = header(k) + unfilled_vertex_renames(k, colour_varyings(k)) + "layout(location = 0) in vec4 a_position;\n";
   if (k.lit) v += "layout(location = 1) in vec3 a_normal;\n";
+  if (k.vertex_material)
+    for (int f = 0; f < (k.two_side() ? 2 : 1); ++f)
+      for (int i = 0; i < 4; ++i) {
+        static const char* const names[4] = {"ambient", "diffuse", "specular", "emission"};
+        v += "layout(location = " + std::to_string(kMaterial + 4 * f + i) + ") in vec4 a_" + face_name(f) + "_" +
+             names[i] + ";\n";
+      }
   v += "layout(location = 2) in vec4 a_color;\n" + declarations(k);
   const std::vector<std::string> outs = colour_varyings(k);
   for (const std::string& o : outs) v += q + "out vec4 " + o + ";\n";
-  v += "void main() {\n  gl_Position = u_mvp * a_position;\n";
+  v += fog_vertex_declarations(k) + "void main() {\n  gl_Position = u_mvp * a_position;\n" + fog_vertex_code(k);
   if (!k.lit) {
     v += "  v_front = saturate(a_color);\n}\n";
   } else {
     if (k.needs_eye_position()) v += "  vec3 eye = (u_modelview * a_position).xyz;\n";
     v += eye_normal(k) + lighting_code(k) + "}\n";
   }
-  std::string fr = "#version 330 core\n";
+  std::string fr = "#version 330 core\n" + feature_fragment_declarations(k, true);
   for (const std::string& o : outs) fr += q + "in vec4 " + o + ";\n";
-  fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + "}\n";
+  fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + feature_fragment_code(k) + "}\n";
   s.vertex = v, s.fragment = fr;
+  s.geometry = unfilled_geometry(k, colour_varyings(k));
   s.feedback = {"gl_Position", "v_front"};
   if (k.two_side()) s.feedback.push_back("v_back");
   return s;
