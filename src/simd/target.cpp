@@ -26,6 +26,8 @@ std::string name_of(int64_t bit) {
   return hwy::TargetName(bit);
 }
 
+bool vectors_now() { return (hwy::SupportedTargets() & HWY_TARGETS & ~kPortable) != 0; }
+
 // Highway's bits are ordered best first (a lower bit is a better target), so "this one and
 // worse" is every bit from it upwards; the portable target stays as the fallback of every
 // restriction.
@@ -38,9 +40,12 @@ void apply(int64_t bit) {
   }
   // Dispatch tables chose at their first call; make them choose again.
   hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+  g_vector_target = vectors_now();
 }
 
 }  // namespace
+
+bool g_vector_target = vectors_now();
 
 int64_t target_bit(const std::string& name) {
   for (const Name& n : kNames)

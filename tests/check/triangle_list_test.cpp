@@ -8,7 +8,7 @@
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
-#include "raster/avx512/kernels.h"
+#include "raster/wide/kernels.h"
 #include "scene/scene.h"
 #include "state/context.h"
 
