@@ -22,6 +22,13 @@ HWY_BEFORE_NAMESPACE();
 namespace ffc::raster::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// Lanes 0, 1, 2, ... plus `first`. Highway 1.0.3 builds Iota(d, first) through memory, which
+// stalls on store forwarding when first is not a constant; Iota(d, 0) is a constant.
+template <class DI>
+HWY_INLINE hn::Vec<DI> LanesFrom(DI di, int32_t first) {
+  return hn::Add(hn::Iota(di, 0), hn::Set(di, first));
+}
+
 // Room for one vector of 32-bit lanes on any target.
 constexpr size_t kMaxLanes32 = HWY_MAX_BYTES / 4;
 
@@ -79,7 +86,7 @@ template <class DF>
 struct Planes {
   using V = hn::Vec<DF>;
   V z0, z1, z2, iw0, iw1, iw2, c0[4], cx[4], cy[4];
-  Planes(DF df, const KernelPlanes& p) {
+  HWY_INLINE Planes(DF df, const KernelPlanes& p) {
     const int n = p.stride;
     z0 = hn::Set(df, p.z[0]), z1 = hn::Set(df, p.z[n]), z2 = hn::Set(df, p.z[2 * n]);
     iw0 = hn::Set(df, p.f[0]), iw1 = hn::Set(df, p.f[n]), iw2 = hn::Set(df, p.f[2 * n]);
@@ -149,7 +156,7 @@ HWY_INLINE uint64_t Segment(DF df, const Planes<DF>& p, Framebuffer& fb, int y, 
   const bool whole = in_row == n;
   uint32_t* const at[2] = {fb.depth.data() + size_t(y) * size_t(fb.width) + size_t(x),
                            reinterpret_cast<uint32_t*>(fb.color.data()) + size_t(y) * size_t(fb.width) + size_t(x)};
-  return ShadeLanes<Mode>(df, p, hn::ConvertTo(df, hn::Iota(di, x)), hn::Set(df, float(double(y) + 0.5)),
+  return ShadeLanes<Mode>(df, p, hn::ConvertTo(df, LanesFrom(di, x)), hn::Set(df, float(double(y) + 0.5)),
                           hn::Set(df, float(fb.height - 1 - y)), lanes, func,
                           [&](int b) { return LoadPixels(du, at[b], whole, in_row); },
                           [&](int b, hn::Vec<decltype(du)> v) { StorePixels(du, v, at[b], whole, in_row); });
@@ -186,7 +193,7 @@ HWY_INLINE void StoreRows(D d, hn::Vec<D> v, uint32_t* at, size_t pitch, unsigne
 // every edge covers the lane (e > limit).
 template <class DI>
 HWY_INLINE hn::Mask<DI> Covered(DI di, const KernelEdges& e, int dx, int dy) {
-  const auto lane = hn::Iota(di, dx);
+  const auto lane = LanesFrom(di, dx);
   auto edge = [&](int i) {
     const auto v = hn::Add(hn::Set(di, e(kE0 + i) + e(kPerY + i) * dy), hn::Mul(hn::Set(di, e(kPerX + i)), lane));
     return hn::Gt(v, hn::Set(di, e(kLimit + i)));
@@ -200,14 +207,25 @@ HWY_INLINE uint64_t BoxCover(const KernelEdges& e, const Bands& bands) {
   const hn::CappedTag<int32_t, 8> di;
   const int n = int(hn::Lanes(di));
   const int xmin = e(kXmin), ymin = e(kYmin), w = e(kXmax) - xmin + 1, h = e(kYmax) - ymin + 1;
+  unsigned rows = 0;  // this thread's
+  for (int r = 0; r < h; ++r) rows |= unsigned(bands.owns((ymin + r) / kBandRows)) << r;
   uint64_t cover = 0;
-  for (int r = 0; r < h; ++r) {
-    if (!bands.owns((ymin + r) / kBandRows)) continue;
-    for (int c = 0; c < w; c += n) {
-      const auto in = hn::And(Covered(di, e, c, r), hn::FirstN(di, size_t(w - c)));
-      uint8_t bits[8] = {};
-      hn::StoreMaskBits(di, in, bits);
-      cover |= uint64_t(bits[0]) << (8 * r + c);
+  for (int c = 0; c < w; c += n) {
+    // The edges at the chunk's lanes of the first row, then a row's step added per row.
+    hn::Vec<decltype(di)> at[3], per_y[3], limit[3];
+    for (int i = 0; i < 3; ++i) {
+      at[i] = hn::Add(hn::Set(di, e(kE0 + i)), hn::Mul(hn::Set(di, e(kPerX + i)), LanesFrom(di, c)));
+      per_y[i] = hn::Set(di, e(kPerY + i)), limit[i] = hn::Set(di, e(kLimit + i));
+    }
+    const auto cols = hn::FirstN(di, size_t(w - c));
+    for (int r = 0; r < h; ++r) {
+      if (rows >> r & 1) {
+        const auto in = hn::And(hn::And(hn::Gt(at[0], limit[0]), hn::Gt(at[1], limit[1])), hn::And(hn::Gt(at[2], limit[2]), cols));
+        uint8_t bits[8] = {};
+        hn::StoreMaskBits(di, in, bits);
+        cover |= uint64_t(bits[0]) << (8 * r + c);
+      }
+      for (int i = 0; i < 3; ++i) at[i] = hn::Add(at[i], per_y[i]);
     }
   }
   return cover;
