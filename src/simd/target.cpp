@@ -28,10 +28,13 @@ std::string name_of(int64_t bit) {
 
 bool vectors_now() { return (hwy::SupportedTargets() & HWY_TARGETS & ~kPortable) != 0; }
 
+int64_t g_applied = 0;  // the restriction in force (0: none), for restrict() to keep on failure
+
 // Highway's bits are ordered best first (a lower bit is a better target), so "this one and
 // worse" is every bit from it upwards; the portable target stays as the fallback of every
 // restriction.
 void apply(int64_t bit) {
+  g_applied = bit;
   if (bit == 0) {
     hwy::SetSupportedTargetsForTest(0);
   } else {
@@ -86,7 +89,7 @@ bool restrict(const std::string& name) {
     // Not available now; with an earlier restriction lifted it may be.
     hwy::SetSupportedTargetsForTest(0);
     const bool there = bit && (hwy::SupportedTargets() & HWY_TARGETS & bit);
-    if (!there) return false;
+    if (!there) return apply(g_applied), false;  // the restriction before, as it was
   }
   apply(bit);
   return true;
