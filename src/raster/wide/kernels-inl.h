@@ -189,6 +189,17 @@ HWY_INLINE void StoreRows(D d, hn::Vec<D> v, uint32_t* at, size_t pitch, unsigne
 }
 #endif
 
+// The edge fields of a set-up triangle (counter-clockwise, box within the framebuffer, vertex
+// extents below 31 pixels so that the edge functions fit in 32 bits): pixel_rules.h's edge_function.
+HWY_INLINE void KernelEdgesOf(const Triangle& t, int32_t (&out)[kEdgeFields]) {
+  out[kXmin] = t.xmin, out[kYmin] = t.ymin, out[kXmax] = t.xmax, out[kYmax] = t.ymax;
+  for (int i = 0; i < 3; ++i) {
+    const EdgeFunction e = edge_function(t, i, t.xmin, t.ymin);
+    out[kE0 + i] = int32_t(e.at), out[kPerX + i] = int32_t(e.per_x), out[kPerY + i] = int32_t(e.per_y);
+    out[kLimit + i] = int32_t(e.limit) - 1;  // e >= limit  as  e > limit - 1
+  }
+}
+
 // Edge i's function at lanes x = x0 + k of row y0 + dy: e0 + per_x k + per_y dy, and whether
 // every edge covers the lane (e > limit).
 template <class DI>
@@ -357,7 +368,7 @@ HWY_INLINE uint64_t Rasterize(Framebuffer& fb, Triangle& t, GLenum func, const B
     });
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
     int32_t edges[kEdgeFields];
-    kernel_edges(t, edges);
+    KernelEdgesOf(t, edges);
     const KernelPlanes kp{t.z, t.inv_w, 1};
     if (t.xmax - t.xmin < 8 && t.ymax - t.ymin < 8) {
       const uint64_t cover = BoxCover({edges, 1}, bands);

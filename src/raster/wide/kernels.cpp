@@ -40,14 +40,5 @@ uint64_t rasterize_wide(DepthMode mode, Framebuffer& fb, Triangle& t, GLenum fun
 static_assert(offsetof(Triangle, cy) + 4 * sizeof(float) == offsetof(Triangle, inv_w) + kPlaneFloats * sizeof(float),
               "Triangle's planes are read as one array of floats");
 
-void kernel_edges(const Triangle& t, int32_t (&out)[kEdgeFields]) {
-  out[kXmin] = t.xmin, out[kYmin] = t.ymin, out[kXmax] = t.xmax, out[kYmax] = t.ymax;
-  for (int i = 0; i < 3; ++i) {
-    const EdgeFunction e = edge_function(t, i, t.xmin, t.ymin);
-    out[kE0 + i] = int32_t(e.at), out[kPerX + i] = int32_t(e.per_x), out[kPerY + i] = int32_t(e.per_y);
-    out[kLimit + i] = int32_t(e.limit) - 1;  // e >= limit  as  e > limit - 1
-  }
-}
-
 }  // namespace ffc::raster::detail
 #endif  // HWY_ONCE

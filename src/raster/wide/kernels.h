@@ -52,10 +52,6 @@ struct KernelPlanes {
   int stride;
 };
 
-// The edge fields of a set-up triangle (counter-clockwise, box within the framebuffer, vertex
-// extents below 31 pixels so that the edge functions fit in 32 bits): pixel_rules.h's edge_function.
-void kernel_edges(const Triangle& t, int32_t (&out)[kEdgeFields]);
-
 // A triangle's planes, filled on demand (the row loop's `planes()`), as a plain function pointer
 // so that the dispatched code takes any caller's.
 struct PlanesRef {
