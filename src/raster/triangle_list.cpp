@@ -188,6 +188,7 @@ using namespace detail;
 // triangles enclose no pixel centre; they are dropped here, once, by whichever thread meets them.
 void bin_range(const List& l, size_t first, size_t last, int units, uint32_t** out) {
   const int fb_w = l.fb.width, fb_h = l.fb.height;
+  if (detail::wide_kernels()) first = bin_wide(l, first, last, units, out);
   for (size_t tri = first; tri < last; ++tri) {
     if (l.idx && tri + kAhead < last)  // indexed vertices are scattered: ask for them early
       for (int k = 0; k < 3; ++k) __builtin_prefetch(&l.vs.snapped[l.idx[3 * (tri + kAhead) + k]]);
@@ -233,7 +234,7 @@ void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const 
   bins.lists.resize(size_t(units * units));
   for (int share = 0; share < units; ++share) {
     const size_t n = triangles * size_t(share + 1) / size_t(units) - triangles * size_t(share) / size_t(units);
-    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n + 16);  // + bin16's last store
+    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n + kBinSlack);  // + the vector code's last store or load
   }
   size_t counts[kMaxThreads][kMaxThreads] = {};
   auto bin = [&](int share) {

@@ -1,6 +1,6 @@
-// The triangle lists' parts shared by the portable draw loop (triangle_list.cpp) and the AVX-512
-// one (avx512/triangle_list_avx512.cpp): a draw's list of triangles, the marks of its binned
-// entries, and the setup and drawing of one triangle. Not an interface.
+// The triangle lists' parts shared by the portable draw loop (triangle_list.cpp) and the Highway
+// one (wide/triangle_list_wide.cpp): a draw's list of triangles, the marks of its binned entries,
+// and the setup and drawing of one triangle. Not an interface.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -28,6 +28,7 @@ struct List {
 constexpr uint32_t kClipped = 1u << 31;  // a binned triangle that needs clipping
 constexpr int kMaxThreads = pool::Workers::kMax;
 constexpr size_t kAhead = 12;  // triangles between a prefetch and the use
+constexpr size_t kBinSlack = 16;  // entries past a bin list's end: room for a vector's store or load
 
 // A triangle with a vertex outside the view volume: clipped, fanned and set up as the general
 // path does, then drawn in this thread's bands.
@@ -119,5 +120,10 @@ inline void for_each_binned(const List& l, const Bands& mine, const uint32_t* co
 // The list's draw loop (triangle_list.cpp's draw_bins) on the dispatched Highway target, its
 // kernels inline (wide/triangle_list_wide.cpp); where wide_kernels().
 void draw_bins_wide(DepthMode mode, const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares);
+
+// bin_range's binning of triangles [first, last) a vector at a time on the dispatched target;
+// returns the first triangle it left (fewer than a vector, or all where the target has no vectors
+// or the numbers leave 32-bit lanes), for bin_range to finish. Where wide_kernels().
+size_t bin_wide(const List& l, size_t first, size_t last, int units, uint32_t** out);
 
 }  // namespace ffc::raster::detail
