@@ -50,16 +50,49 @@ HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
 }
 #endif
 
-// [0, 1] with a NaN as 0 (maxss's order in pixel_rules.h; NEON's max would keep the NaN).
+#undef FFCOMPAT_X86_VECTORS
+#if HWY_ARCH_X86 && HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128
+#define FFCOMPAT_X86_VECTORS 1
+#else
+#define FFCOMPAT_X86_VECTORS 0
+#endif
+
+// [0, 1] with a NaN as 0 (maxss's order in pixel_rules.h). x86's max returns its second operand
+// when either is a NaN, and Highway's Max(v, 0) is that instruction there; NEON's max would keep
+// the NaN, so elsewhere the NaN lanes are zeroed first.
 template <class DF, class V>
 HWY_INLINE V Clamp01(DF df, V v) {
+#if FFCOMPAT_X86_VECTORS
+  return hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f));
+#else
   return hn::Min(hn::Max(hn::IfThenZeroElse(hn::IsNaN(v), v), hn::Zero(df)), hn::Set(df, 1.0f));
+#endif
+}
+
+// Rounded half to even to int32, for values already within [0, 2^24] (clamped and scaled): on x86
+// the conversion instruction alone (Highway's NearestInt adds a fix for values beyond int32, three
+// more instructions a vector that these values never need), NearestInt elsewhere.
+template <class DF, class V>
+HWY_INLINE auto RoundInRange(DF, V v) {
+  const hn::RebindToSigned<DF> di;
+#if FFCOMPAT_X86_VECTORS
+  if constexpr (sizeof(v.raw) == 64) {
+    return hn::Vec<decltype(di)>{_mm512_cvtps_epi32(v.raw)};
+  } else if constexpr (sizeof(v.raw) == 32) {
+    return hn::Vec<decltype(di)>{_mm256_cvtps_epi32(v.raw)};
+  } else {
+    return hn::Vec<decltype(di)>{_mm_cvtps_epi32(v.raw)};
+  }
+#else
+  (void)di;
+  return hn::NearestInt(v);
+#endif
 }
 
 // pixel_rules.h's depth24, a lane a pixel: clamped, times 2^24 - 1, rounded half to even.
 template <class DF, class V>
 HWY_INLINE auto Depth24(DF df, V z) {
-  return hn::NearestInt(hn::Mul(Clamp01(df, z), hn::Set(df, 16777215.0f)));
+  return RoundInRange(df, hn::Mul(Clamp01(df, z), hn::Set(df, 16777215.0f)));
 }
 
 // The lanes of `lanes` whose depth z passes against the stored one (24-bit values: the signed
@@ -95,6 +128,22 @@ struct Planes {
   }
 };
 
+// A triangle's planes at columns col (X = col + 0.5), the terms that depend on X only added:
+// depth's first fused step and (p0 + px X) of 1/w and of each colour / w. Shading then adds py Y
+// in the planes' order, so the same bits; a box's blocks share their columns and compute these
+// once.
+template <class DF>
+struct AtColumns {
+  using V = hn::Vec<DF>;
+  V z, iw, c[4];
+  const Planes<DF>& p;
+  HWY_INLINE AtColumns(DF df, const Planes<DF>& planes, V col) : p(planes) {
+    const V fx = hn::Add(col, hn::Set(df, 0.5f));
+    z = FusedMulAdd(df, p.z1, col, p.z0), iw = hn::Add(p.iw0, hn::Mul(p.iw1, fx));
+    for (int k = 0; k < 4; ++k) c[k] = hn::Add(p.c0[k], hn::Mul(p.cx[k], fx));
+  }
+};
+
 // The pixels x + k of a row: read whole where the vector lies within the row (the row is this
 // thread's, so lanes outside the mask are written back unchanged), else lane by lane (the last
 // pixels of a row: the next row may be another thread's, or past the buffer). No masked loads
@@ -119,13 +168,14 @@ HWY_INLINE void StorePixels(DU du, hn::Vec<DU> v, uint32_t* at, bool whole, size
 // lane; the stored depth and colour read by load(buffer) and written by store(buffer, v)
 // (buffer 0: depth, 1: colour). Returns the drawn pixels whose colour was not finite.
 template <DepthMode Mode, class DF, class V, class Load, class Store>
-HWY_INLINE uint64_t ShadeLanes(DF df, const Planes<DF>& p, V col, V fy, V y_down, hn::Mask<DF> lanes_f, GLenum func, Load&& load,
+HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, V fy, V y_down, hn::Mask<DF> lanes_f, GLenum func, Load&& load,
                                Store&& store) {
+  const Planes<DF>& p = a.p;
   const hn::RebindToSigned<DF> di;
   const hn::RebindToUnsigned<DF> du;
   auto pass = hn::RebindMask(di, lanes_f);
   if constexpr (Mode != kNoDepth) {
-    const auto z = Depth24(df, FusedMulAdd(df, p.z2, y_down, FusedMulAdd(df, p.z1, col, p.z0)));
+    const auto z = Depth24(df, FusedMulAdd(df, p.z2, y_down, a.z));
     const auto old_z = load(0);
     pass = DepthTest<Mode>(di, pass, z, hn::BitCast(di, old_z), func);
     if (hn::AllFalse(di, pass)) return 0;
@@ -133,14 +183,13 @@ HWY_INLINE uint64_t ShadeLanes(DF df, const Planes<DF>& p, V col, V fy, V y_down
   }
   // Colour: ((c0 + cx X) + cy Y) * (1 / ((iw0 + iw1 X) + iw2 Y)), clamped, times 255, rounded
   // half to even, a byte a channel (pixel_rules.h unorm8).
-  const auto fx = hn::Add(col, hn::Set(df, 0.5f));
-  const auto inv = hn::Div(hn::Set(df, 1.0f), hn::Add(hn::Add(p.iw0, hn::Mul(p.iw1, fx)), hn::Mul(p.iw2, fy)));
+  const auto inv = hn::Div(hn::Set(df, 1.0f), hn::Add(a.iw, hn::Mul(p.iw2, fy)));
   auto rgba = hn::Zero(du);
   auto finite = hn::RebindMask(df, pass);
   for (int k = 0; k < 4; ++k) {
-    const auto v = hn::Mul(hn::Add(hn::Add(p.c0[k], hn::Mul(p.cx[k], fx)), hn::Mul(p.cy[k], fy)), inv);
+    const auto v = hn::Mul(hn::Add(a.c[k], hn::Mul(p.cy[k], fy)), inv);
     finite = hn::And(finite, hn::IsFinite(v));
-    const auto q = hn::BitCast(du, hn::NearestInt(hn::Mul(Clamp01(df, v), hn::Set(df, 255.0f))));
+    const auto q = hn::BitCast(du, RoundInRange(df, hn::Mul(Clamp01(df, v), hn::Set(df, 255.0f))));
     rgba = hn::Or(rgba, hn::ShiftLeftSame(q, 8 * k));
   }
   store(1, hn::IfThenElse(hn::RebindMask(du, pass), rgba, load(1)));
@@ -156,7 +205,7 @@ HWY_INLINE uint64_t Segment(DF df, const Planes<DF>& p, Framebuffer& fb, int y, 
   const bool whole = in_row == n;
   uint32_t* const at[2] = {fb.depth.data() + size_t(y) * size_t(fb.width) + size_t(x),
                            reinterpret_cast<uint32_t*>(fb.color.data()) + size_t(y) * size_t(fb.width) + size_t(x)};
-  return ShadeLanes<Mode>(df, p, hn::ConvertTo(df, LanesFrom(di, x)), hn::Set(df, float(double(y) + 0.5)),
+  return ShadeLanes<Mode>(df, AtColumns<DF>(df, p, hn::ConvertTo(df, LanesFrom(di, x))), hn::Set(df, float(double(y) + 0.5)),
                           hn::Set(df, float(fb.height - 1 - y)), lanes, func,
                           [&](int b) { return LoadPixels(du, at[b], whole, in_row); },
                           [&](int b, hn::Vec<decltype(du)> v) { StorePixels(du, v, at[b], whole, in_row); });
@@ -278,6 +327,7 @@ HWY_INLINE uint64_t BoxShadeRows(Framebuffer& fb, const KernelPlanes& kp, int xm
   const auto k = hn::Iota(di, 0);
   const auto dy = hn::ShiftRight<W == 4 ? 2 : 3>(k);
   const auto col = hn::ConvertTo(df, hn::Add(hn::Set(di, xmin), hn::And(k, hn::Set(di, int32_t(W - 1)))));
+  const AtColumns<DF> at_col(df, p, col);
   const size_t pitch = size_t(fb.width);
   uint32_t* const base[2] = {fb.depth.data(), reinterpret_cast<uint32_t*>(fb.color.data())};
   uint64_t nonfinite = 0;
@@ -293,7 +343,7 @@ HWY_INLINE uint64_t BoxShadeRows(Framebuffer& fb, const KernelPlanes& kp, int xm
     const int y0 = ymin + r0;
     const auto y = hn::Add(hn::Set(di, y0), dy);
     const size_t at = size_t(y0) * pitch + size_t(xmin);
-    nonfinite += ShadeLanes<Mode, DF>(df, p, col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)),
+    nonfinite += ShadeLanes<Mode, DF>(df, at_col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)),
                                   hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)), hn::LoadMaskBits(df, mask_bits), func,
                                   [&](int b) { return LoadRows<W>(du, base[b] + at, pitch, live); },
                                   [&](int b, hn::Vec<hn::RebindToUnsigned<DF>> v) { StoreRows<W>(du, v, base[b] + at, pitch, live); });
@@ -317,6 +367,79 @@ HWY_INLINE uint64_t BoxShadeAny(Framebuffer& fb, const KernelPlanes& kp, int xmi
   (void)w;
 #endif
   return BoxShade<Mode>(fb, kp, xmin, ymin, cover, func);
+}
+
+#if HWY_TARGET != HWY_SCALAR
+// The box kernel with coverage and shading together, a block of MaxLanes / W rows of W pixels a
+// vector (lane k: pixel (k % W, k / W) from the block's corner; W = 4 or 8, at least two rows a
+// block): each block's lanes tested against the edges, then its covered pixels shaded, with no
+// coverage bits in between. For a box at most W wide whose first W columns lie within the
+// framebuffer, planes ready (the grouped setup of setup_group-inl.h made them).
+template <size_t W, DepthMode Mode>
+HWY_INLINE uint64_t BoxBlocks(Framebuffer& fb, const KernelEdges& e, const KernelPlanes& kp, const Bands& bands, GLenum func) {
+  using DF = hn::CappedTag<float, 16>;
+  const DF df;
+  const hn::RebindToSigned<DF> di;
+  const hn::RebindToUnsigned<DF> du;
+  using VI = hn::Vec<decltype(di)>;
+  constexpr int kRows = int(hn::MaxLanes(DF()) / W);
+  static_assert(kRows >= 2, "rows a block");
+  const int xmin = e(kXmin), ymin = e(kYmin), ymax = e(kYmax), h = ymax - ymin + 1;
+  // The box's rows in this thread's bands, a bit each (a box of at most 8 rows meets at most two bands).
+  const int b0 = ymin / kBandRows, b1 = ymax / kBandRows;
+  const unsigned all = (1u << h) - 1, first = b0 == b1 ? all : (1u << ((b0 + 1) * kBandRows - ymin)) - 1;
+  const unsigned rows = (bands.owns(b0) ? first : 0) | (bands.owns(b1) ? all & ~first : 0);
+  if (!rows) return 0;
+  const VI k = hn::Iota(di, 0);
+  const VI dx = hn::And(k, hn::Set(di, int32_t(W - 1))), dy = hn::ShiftRight<W == 4 ? 2 : 3>(k);
+  const VI row_bit = hn::Set(di, 1) << dy;
+  const auto cols = hn::Lt(dx, hn::Set(di, e(kXmax) - xmin + 1));
+  VI at[3], step[3], limit[3];  // edge i at the block's lanes, its step a block, its limit
+  for (int i = 0; i < 3; ++i) {
+    at[i] = hn::Add(hn::Set(di, e(kE0 + i)), hn::Add(hn::Mul(hn::Set(di, e(kPerX + i)), dx), hn::Mul(hn::Set(di, e(kPerY + i)), dy)));
+    step[i] = hn::Set(di, e(kPerY + i) * kRows), limit[i] = hn::Set(di, e(kLimit + i));
+  }
+  const Planes<DF> p(df, kp);
+  const auto col = hn::ConvertTo(df, hn::Add(hn::Set(di, xmin), dx));
+  const AtColumns<DF> at_col(df, p, col);
+  const size_t pitch = size_t(fb.width);
+  uint32_t* const base[2] = {fb.depth.data(), reinterpret_cast<uint32_t*>(fb.color.data())};
+  uint64_t nonfinite = 0;
+  for (int r0 = 0; r0 < h; r0 += kRows) {
+    const unsigned live = rows >> r0 & ((1u << kRows) - 1);  // the block's rows read and written
+    const auto in = hn::And(hn::And(hn::And(hn::Gt(at[0], limit[0]), hn::Gt(at[1], limit[1])), hn::Gt(at[2], limit[2])),
+                            hn::And(cols, hn::TestBit(hn::Set(di, int32_t(live)), row_bit)));
+    for (int i = 0; i < 3; ++i) at[i] = hn::Add(at[i], step[i]);
+    if (hn::AllFalse(di, in)) continue;
+    const int y0 = ymin + r0;
+    const VI y = hn::Add(hn::Set(di, y0), dy);
+    const size_t off = size_t(y0) * pitch + size_t(xmin);
+    nonfinite += ShadeLanes<Mode, DF>(df, at_col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)),
+                                      hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)), hn::RebindMask(df, in), func,
+                                      [&](int b) { return LoadRows<W>(du, base[b] + off, pitch, live); },
+                                      [&](int b, hn::Vec<hn::RebindToUnsigned<DF>> v) { StoreRows<W>(du, v, base[b] + off, pitch, live); });
+  }
+  return nonfinite;
+}
+#endif
+
+// A box of at most 8x8 pixel centres with planes ready: by blocks where the target's vectors hold
+// two rows of the box or more and its first columns lie within the framebuffer, else coverage
+// bits first and then rows.
+template <DepthMode Mode>
+HWY_INLINE uint64_t BoxDraw(Framebuffer& fb, const KernelEdges& e, const KernelPlanes& kp, const Bands& bands, GLenum func) {
+  const int xmin = e(kXmin), w = e(kXmax) - xmin + 1;
+#if HWY_TARGET != HWY_SCALAR
+  constexpr size_t kN = hn::MaxLanes(hn::CappedTag<float, 16>());
+  if constexpr (kN >= 8) {
+    if (w <= 4 && xmin + 4 <= fb.width) return BoxBlocks<4, Mode>(fb, e, kp, bands, func);
+  }
+  if constexpr (kN >= 16) {
+    if (xmin + 8 <= fb.width) return BoxBlocks<8, Mode>(fb, e, kp, bands, func);
+  }
+#endif
+  const uint64_t cover = BoxCover(e, bands);
+  return cover ? BoxShadeAny<Mode>(fb, kp, xmin, e(kYmin), w, cover, func) : 0;
 }
 
 // Pixels lo..hi of row y, a vector at a time.

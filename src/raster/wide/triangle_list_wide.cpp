@@ -85,8 +85,7 @@ void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in
           nonfinite += BoxShadeAny<Mode>(l.fb, kp, xmin, ymin, w, cover, func);
         } else if (g.box >> lane & 1) {
           if (!(g.ok >> lane & 1)) continue;  // not drawn, as smooth_planes decides
-          const uint64_t cover = BoxCover({&g.edges[0][lane], int(kGroup)}, mine);
-          if (cover) nonfinite += BoxShadeAny<Mode>(l.fb, kp, xmin, ymin, w, cover, func);
+          nonfinite += BoxDraw<Mode>(l.fb, {&g.edges[0][lane], int(kGroup)}, kp, mine, func);
         } else if (!(g.none >> lane & 1)) {
           const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
           nonfinite += DrawOne<Mode>(l, mine, vi, p);
