@@ -311,6 +311,23 @@ HWY_INLINE uint64_t BoxShade(Framebuffer& fb, const KernelPlanes& kp, int xmin, 
   return nonfinite;
 }
 
+#if HWY_TARGET != HWY_SCALAR
+// Depth and colour of the lanes `lanes` of a block whose first row is y0 (lane k: column
+// xmin + k % W, row y0 + dy[k]), its rows `live` read and written whole.
+template <size_t W, DepthMode Mode, class DF>
+HWY_INLINE uint64_t ShadeBlock(DF df, const AtColumns<DF>& at_col, Framebuffer& fb, hn::Vec<hn::RebindToSigned<DF>> dy, int xmin, int y0,
+                               hn::Mask<DF> lanes, unsigned live, GLenum func) {
+  const hn::RebindToSigned<DF> di;
+  const hn::RebindToUnsigned<DF> du;
+  const size_t pitch = size_t(fb.width), off = size_t(y0) * pitch + size_t(xmin);
+  uint32_t* const at[2] = {fb.depth.data() + off, reinterpret_cast<uint32_t*>(fb.color.data()) + off};
+  const auto y = hn::Add(hn::Set(di, y0), dy);
+  return ShadeLanes<Mode, DF>(df, at_col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)), hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)),
+                              lanes, func, [&](int b) { return LoadRows<W>(du, at[b], pitch, live); },
+                              [&](int b, hn::Vec<decltype(du)> v) { StoreRows<W>(du, v, at[b], pitch, live); });
+}
+#endif
+
 // The same, MaxLanes / W rows of the box a vector (W = 4 or 8, at least two rows a vector), for a
 // box whose first W columns lie within the framebuffer: lane k is pixel (k % W, k / W) from the
 // box's corner, its rows read and written whole.
@@ -328,8 +345,6 @@ HWY_INLINE uint64_t BoxShadeRows(Framebuffer& fb, const KernelPlanes& kp, int xm
   const auto dy = hn::ShiftRight<W == 4 ? 2 : 3>(k);
   const auto col = hn::ConvertTo(df, hn::Add(hn::Set(di, xmin), hn::And(k, hn::Set(di, int32_t(W - 1)))));
   const AtColumns<DF> at_col(df, p, col);
-  const size_t pitch = size_t(fb.width);
-  uint32_t* const base[2] = {fb.depth.data(), reinterpret_cast<uint32_t*>(fb.color.data())};
   uint64_t nonfinite = 0;
   for (int r0 = 0; r0 < 8 && (cover >> (8 * r0)); r0 += kRows) {
     uint32_t bits = 0;
@@ -340,13 +355,7 @@ HWY_INLINE uint64_t BoxShadeRows(Framebuffer& fb, const KernelPlanes& kp, int xm
     }
     if (!bits) continue;
     const uint8_t mask_bits[8] = {uint8_t(bits), uint8_t(bits >> 8)};
-    const int y0 = ymin + r0;
-    const auto y = hn::Add(hn::Set(di, y0), dy);
-    const size_t at = size_t(y0) * pitch + size_t(xmin);
-    nonfinite += ShadeLanes<Mode, DF>(df, at_col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)),
-                                  hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)), hn::LoadMaskBits(df, mask_bits), func,
-                                  [&](int b) { return LoadRows<W>(du, base[b] + at, pitch, live); },
-                                  [&](int b, hn::Vec<hn::RebindToUnsigned<DF>> v) { StoreRows<W>(du, v, base[b] + at, pitch, live); });
+    nonfinite += ShadeBlock<W, Mode>(df, at_col, fb, dy, xmin, ymin + r0, hn::LoadMaskBits(df, mask_bits), live, func);
   }
   return nonfinite;
 }
@@ -402,8 +411,6 @@ HWY_INLINE uint64_t BoxBlocks(Framebuffer& fb, const KernelEdges& e, const Kerne
   const Planes<DF> p(df, kp);
   const auto col = hn::ConvertTo(df, hn::Add(hn::Set(di, xmin), dx));
   const AtColumns<DF> at_col(df, p, col);
-  const size_t pitch = size_t(fb.width);
-  uint32_t* const base[2] = {fb.depth.data(), reinterpret_cast<uint32_t*>(fb.color.data())};
   uint64_t nonfinite = 0;
   for (int r0 = 0; r0 < h; r0 += kRows) {
     const unsigned live = rows >> r0 & ((1u << kRows) - 1);  // the block's rows read and written
@@ -411,13 +418,7 @@ HWY_INLINE uint64_t BoxBlocks(Framebuffer& fb, const KernelEdges& e, const Kerne
                             hn::And(cols, hn::TestBit(hn::Set(di, int32_t(live)), row_bit)));
     for (int i = 0; i < 3; ++i) at[i] = hn::Add(at[i], step[i]);
     if (hn::AllFalse(di, in)) continue;
-    const int y0 = ymin + r0;
-    const VI y = hn::Add(hn::Set(di, y0), dy);
-    const size_t off = size_t(y0) * pitch + size_t(xmin);
-    nonfinite += ShadeLanes<Mode, DF>(df, at_col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)),
-                                      hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)), hn::RebindMask(df, in), func,
-                                      [&](int b) { return LoadRows<W>(du, base[b] + off, pitch, live); },
-                                      [&](int b, hn::Vec<hn::RebindToUnsigned<DF>> v) { StoreRows<W>(du, v, base[b] + off, pitch, live); });
+    nonfinite += ShadeBlock<W, Mode>(df, at_col, fb, dy, xmin, ymin + r0, hn::RebindMask(df, in), live, func);
   }
   return nonfinite;
 }
