@@ -424,6 +424,31 @@ HWY_INLINE uint64_t BoxBlocks(Framebuffer& fb, const KernelEdges& e, const Kerne
 }
 #endif
 
+// A box of at most 2x2 pixel centres, planes ready, whose coverage the setup found (bits for
+// (0,0) (1,0) (0,1) (1,1) from its corner, this thread's rows only): one block of two rows of four
+// where a vector holds eight lanes and the four columns lie within the framebuffer, else through
+// the coverage bits.
+template <DepthMode Mode>
+HWY_INLINE uint64_t TinyShade(Framebuffer& fb, const KernelPlanes& kp, int xmin, int ymin, int w, unsigned bits, GLenum func) {
+#if HWY_TARGET != HWY_SCALAR
+  using DF = hn::CappedTag<float, 8>;
+  if constexpr (hn::MaxLanes(DF()) == 8) {
+    if (xmin + 4 <= fb.width) {
+      const DF df;
+      const hn::RebindToSigned<DF> di;
+      const Planes<DF> p(df, kp);
+      const auto k = hn::Iota(di, 0);
+      const auto col = hn::ConvertTo(df, hn::Add(hn::Set(di, xmin), hn::And(k, hn::Set(di, 3))));
+      const uint8_t lanes = uint8_t((bits & 3) | (bits & 0xC) << 2);
+      const unsigned live = unsigned((bits & 3) != 0) | unsigned((bits & 0xC) != 0) << 1;
+      return ShadeBlock<4, Mode>(df, AtColumns<DF>(df, p, col), fb, hn::ShiftRight<2>(k), xmin, ymin, hn::LoadMaskBits(df, &lanes), live,
+                                 func);
+    }
+  }
+#endif
+  return BoxShadeAny<Mode>(fb, kp, xmin, ymin, w, (bits & 3) | uint64_t(bits >> 2) << 8, func);
+}
+
 // A box of at most 8x8 pixel centres with planes ready: by blocks where the target's vectors hold
 // two rows of the box or more and its first columns lie within the framebuffer, else coverage
 // bits first and then rows.

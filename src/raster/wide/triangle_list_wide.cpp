@@ -81,8 +81,7 @@ void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in
           if (!mine.owns(ymin / kBandRows)) bits &= 0xC;
           if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
           if (!bits || !(g.ok >> lane & 1)) continue;
-          const uint64_t cover = (bits & 3) | uint64_t(bits >> 2) << 8;  // BoxCover's bits: 8 a row
-          nonfinite += BoxShadeAny<Mode>(l.fb, kp, xmin, ymin, w, cover, func);
+          nonfinite += TinyShade<Mode>(l.fb, kp, xmin, ymin, w, bits, func);
         } else if (g.box >> lane & 1) {
           if (!(g.ok >> lane & 1)) continue;  // not drawn, as smooth_planes decides
           nonfinite += BoxDraw<Mode>(l.fb, {&g.edges[0][lane], int(kGroup)}, kp, mine, func);
