@@ -11,7 +11,8 @@
 #include <sstream>
 
 #include "cli/common.h"
-#include "raster/avx512/kernels.h"
+#include "raster/wide/kernels.h"
+#include "simd/target.h"
 #include "state/context.h"
 
 namespace ffc::cli {
@@ -94,12 +95,14 @@ void add_bench(CLI::App& app) {
     }
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
+    const std::string kernels = raster::detail::wide_kernels() ? simd::current() : "scalar";
     nlohmann::json j = {{"scene", opts->json(d)}, {"frames", *frames}, {"block", *block}, {"threads", *threads}, {"median_ms", medians},
                         {"spread", all}, {"peak_rss_mb", ru.ru_maxrss / 1024.0},
                         // C++ heap allocations per timed frame (Mesa's C code allocates with malloc: not seen)
                         {"allocations_per_frame", alloc_json},
-                        // soft's rasterizer: the AVX-512 kernels or the portable scalar loops (same pictures)
-                        {"soft_kernels", raster::detail::wide_kernels() ? "avx512" : "scalar"}};
+                        // soft's rasterizer: the Highway target its kernels ran on (FFCOMPAT_SIMD), or the
+                        // scalar loops (same pictures)
+                        {"soft_kernels", kernels}};
     if (median.count("mesa") && median.count("soft")) j["speedup"] = median["mesa"] / median["soft"];
     if (median.count("mesa")) add_platform(j, "mesa");
     if (*json) return print_json(j);
@@ -107,7 +110,7 @@ void add_bench(CLI::App& app) {
     for (const auto& n : names) std::printf("%-12s %12.3f %18.1f\n", n.c_str(), median[n], alloc_json[n].get<double>());
     if (j.contains("speedup")) std::printf("speedup (mesa / soft): %.2fx\n", j["speedup"].get<double>());
     std::printf("%d frames each in blocks of %d, %dx%d; peak RSS %.0f MB; soft's kernels: %s\n", *frames, *block, d.width,
-                d.height, ru.ru_maxrss / 1024.0, raster::detail::wide_kernels() ? "AVX-512" : "scalar");
+                d.height, ru.ru_maxrss / 1024.0, kernels.c_str());
   });
 }
 

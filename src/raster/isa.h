@@ -1,6 +1,6 @@
 // Which instructions our code may name. On x86-64 the portable loops use SSE2 intrinsics (every
-// x86-64 CPU has them) and the AVX-512 kernels (raster/avx512/) are built beside them, chosen at
-// run time. Everywhere else, and on x86 when built with FFCOMPAT_PORTABLE (the CMake option of
+// x86-64 CPU has them); the vector kernels are Highway's (raster/wide/), compiled for every
+// target and chosen at run time. Everywhere else, and on x86 when built with FFCOMPAT_PORTABLE (the CMake option of
 // that name, to test them there), every use of intrinsics gives way to a plain C++ twin with the
 // same bits: the reference rasterizer (raster/reference.cpp) and the bit-for-bit tests hold both.
 #pragma once

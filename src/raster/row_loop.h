@@ -1,8 +1,8 @@
 // The row loop: which pixels of a set-up triangle this thread draws, found by the cheapest exact
 // strategy for the triangle's size (tiny: a 2x2 test; small: four centres at a time in SSE2;
 // large: each row's span solved for), each pixel's depth and colour by the rules of
-// pixel_rules.h. Where the CPU has AVX-512 (avx512/kernels.h), small triangles and long rows go to
-// the kernels instead; they draw the same bits. Used by draw_triangles (set-up triangles) and
+// pixel_rules.h. Where the dispatch picks a vector target (wide/kernels.h), its kernels draw
+// instead; they draw the same bits. Used by draw_triangles (set-up triangles) and
 // draw_triangle_list (shared vertices); not an interface.
 #pragma once
 #include "raster/isa.h"
@@ -16,7 +16,7 @@
 #include <cstring>
 #include <type_traits>
 
-#include "raster/avx512/kernels.h"
+#include "raster/wide/kernels.h"
 #include "raster/pixel_rules.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
@@ -114,104 +114,113 @@ inline unsigned cover_2x2(const Triangle& t) {
 #endif
 }
 
-// Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands.
-// `planes()` fills t's planes and is called once, before the first covered pixel (most tiny
-// triangles cover none); false from it drops the triangle.
-template <DepthMode D, typename Planes>
-void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
-  bool ready = false;
+// Pixels lo..hi of row py, covered by t (planes filled), drawn one by one: depth test, colour.
+// Each pixel's values come from the planes at its own centre, (p0 + px X) + py Y, never stepped
+// from a neighbour, so that the vector kernels (wide/kernels.h) compute the same bits a vector of
+// pixels at a time. Returns the drawn pixels whose colour was not finite.
+template <DepthMode D>
+inline uint64_t span_scalar(Framebuffer& fb, const Triangle& t, int py, int lo, int hi, GLenum depth_func) {
   uint64_t nonfinite = 0;
 #if FFCOMPAT_X86
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
 #endif
-  // Pixels lo..hi of row py are covered. Each pixel's values come from the planes at its own
-  // centre, (p0 + px X) + py Y, never stepped from a neighbour: the kernels of
-  // avx512/kernels.h compute the same bits sixteen pixels at a time.
+  // py Y once for the row: the same products, so the same bits.
+  const double y = py + 0.5;
+  const float fy = float(y), iwy = t.inv_w[2] * fy, y_down = float(fb.height - 1 - py);
+#if FFCOMPAT_X86
+  const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
+#else
+  float cy[4];
+  for (int k = 0; k < 4; ++k) cy[k] = t.cy[k] * fy;
+#endif
+  uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
+  uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
+  for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
+    const double x = px + 0.5;
+    bool pass = true;
+    if constexpr (D != kNoDepth) {
+      const uint32_t zi = depth24(depth_at(t.z, 1, float(px), y_down));
+      if constexpr (D == kLess) pass = zi < *zp;
+      else if constexpr (D == kLequal) pass = zi <= *zp;
+      else pass = depth_pass(depth_func, zi, *zp);
+      if (pass) *zp = zi;
+    }
+    if (pass) {
+      const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + iwy;
+#if FFCOMPAT_X86
+      const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), cy);
+      // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
+      __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
+      nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
+      cl = _mm_min_ps(_mm_max_ps(cl, zero), one);
+      const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(cl, k255));
+      const __m128i i16 = _mm_packs_epi32(i32, i32);
+      const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
+      std::memcpy(o, &rgba, 4);
+#else
+      const float inv = 1.0f / iw;
+      bool finite = true;
+      for (int k = 0; k < 4; ++k) {
+        const float c = ((t.c0[k] + t.cx[k] * fx) + cy[k]) * inv;
+        finite &= std::isfinite(c);
+        o[k] = unorm8(c);
+      }
+      nonfinite += !finite;
+#endif
+    }
+  }
+  return nonfinite;
+}
+
+// Calls draw(py, lo, hi) for the covered pixels of a triangle whose box is at most 2x2 pixel
+// centres and whose vertices lie within 4 pixels of each other, in this thread's bands; stops at
+// a call that returns false.
+template <typename Draw>
+inline void for_each_tiny_span(const Triangle& t, const Bands& bands, Draw&& draw) {
+  unsigned mask = cover_2x2(t);
+  if (t.xmax == t.xmin) mask &= 0x5;
+  if (t.ymax == t.ymin) mask &= 0x3;
+  for (int row = 0; mask; ++row, mask >>= 2) {
+    const int py = t.ymin + row;
+    if (!(mask & 3) || !bands.owns(py / kBandRows)) continue;
+    if (!draw(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
+  }
+}
+
+inline bool is_tiny(const Triangle& t, int64_t ext_x, int64_t ext_y) {
+  return t.xmax - t.xmin <= 1 && t.ymax - t.ymin <= 1 && ext_x < 4 * 256 && ext_y < 4 * 256;
+}
+
+// Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands.
+// `planes()` fills t's planes and is called once, before the first covered pixel (most tiny
+// triangles cover none); false from it drops the triangle. Where wide_kernels(), the dispatched
+// target's kernels draw it (wide/kernels.h), else the loops below.
+template <DepthMode D, typename Planes>
+void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
+  uint64_t nonfinite = 0;
+  if (wide_kernels()) {
+    nonfinite = rasterize_wide(D, fb, t, depth_func, bands, PlanesRef::of(planes));
+    if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+    return;
+  }
+  bool ready = false;
   auto draw_span = [&](int py, int lo, int hi) {
     if (!ready) {
       if (!planes()) return false;
       ready = true;
     }
-#if FFCOMPAT_X86
-    if (hi - lo >= 15 && wide_kernels()) {  // the long rows of large triangles
-      nonfinite += span_shade<D>(fb, {t.z, t.inv_w, 1}, py, lo, hi, depth_func);
-      return true;
-    }
-#endif
-    // py Y once for the row: the same products, so the same bits.
-    const double y = py + 0.5;
-    const float fy = float(y), iwy = t.inv_w[2] * fy, y_down = float(fb.height - 1 - py);
-#if FFCOMPAT_X86
-    const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
-#else
-    float cy[4];
-    for (int k = 0; k < 4; ++k) cy[k] = t.cy[k] * fy;
-#endif
-    uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
-    uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
-    for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
-      const double x = px + 0.5;
-      bool pass = true;
-      if constexpr (D != kNoDepth) {
-        const uint32_t zi = depth24(depth_at(t.z, 1, float(px), y_down));
-        if constexpr (D == kLess) pass = zi < *zp;
-        else if constexpr (D == kLequal) pass = zi <= *zp;
-        else pass = depth_pass(depth_func, zi, *zp);
-        if (pass) *zp = zi;
-      }
-      if (pass) {
-        const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + iwy;
-#if FFCOMPAT_X86
-        const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), cy);
-        // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
-        __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
-        nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
-        cl = _mm_min_ps(_mm_max_ps(cl, zero), one);
-        const __m128i i32 = _mm_cvtps_epi32(_mm_mul_ps(cl, k255));
-        const __m128i i16 = _mm_packs_epi32(i32, i32);
-        const uint32_t rgba = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
-        std::memcpy(o, &rgba, 4);
-#else
-        const float inv = 1.0f / iw;
-        bool finite = true;
-        for (int k = 0; k < 4; ++k) {
-          const float c = ((t.c0[k] + t.cx[k] * fx) + cy[k]) * inv;
-          finite &= std::isfinite(c);
-          o[k] = unorm8(c);
-        }
-        nonfinite += !finite;
-#endif
-      }
-    }
+    nonfinite += span_scalar<D>(fb, t, py, lo, hi, depth_func);
     return true;
   };
   const int64_t ext_x = std::max({t.x[0], t.x[1], t.x[2]}) - std::min({t.x[0], t.x[1], t.x[2]});
   const int64_t ext_y = std::max({t.y[0], t.y[1], t.y[2]}) - std::min({t.y[0], t.y[1], t.y[2]});
-  if (t.xmax - t.xmin <= 1 && t.ymax - t.ymin <= 1 && ext_x < 4 * 256 && ext_y < 4 * 256) {
+  if (is_tiny(t, ext_x, ext_y)) {
     // Tiny (most triangles at high subdivision): the at most 2x2 pixel centres of the box tested
     // at once.
-    unsigned mask = cover_2x2(t);
-    if (t.xmax == t.xmin) mask &= 0x5;
-    if (t.ymax == t.ymin) mask &= 0x3;
-    for (int row = 0; mask; ++row, mask >>= 2) {
-      const int py = t.ymin + row;
-      if (!(mask & 3) || !bands.owns(py / kBandRows)) continue;
-      if (!draw_span(py, t.xmin + ((mask & 1) ? 0 : 1), t.xmin + ((mask & 2) ? 1 : 0))) return;
-    }
+    for_each_tiny_span(t, bands, draw_span);
 #if FFCOMPAT_X86
-  } else if (ext_x < 31 * 256 && ext_y < 31 * 256 && wide_kernels()) {
-    // Edge functions in 32 bits: at most 8x8 pixel centres (most triangles of a subdivided
-    // sphere) by the box kernel, larger boxes in rows of sixteen pixels.
-    int32_t edges[kEdgeFields];
-    kernel_edges(t, edges);
-    if (t.xmax - t.xmin < 8 && t.ymax - t.ymin < 8) {
-      const BoxCoverage c = box_coverage({edges, 1}, bands);
-      if (c.blocks && planes()) nonfinite = box_shade<D>(fb, {t.z, t.inv_w, 1}, t.xmin, t.ymin, depth_func, c);
-    } else if (planes()) {
-      nonfinite = rows_shade<D>(fb, {edges, 1}, {t.z, t.inv_w, 1}, bands, depth_func);
-    }
   } else if (ext_x < 31 * 256 && ext_y < 31 * 256) {
-    // Small (SSE2 without AVX-512): edge functions relative to the box's first pixel centre fit in
+    // Small (SSE2): edge functions relative to the box's first pixel centre fit in
     // 32 bits, and four pixels of a row are tested at once; a row's covered pixels are contiguous.
     int32_t at[3], per_y[3];
     __m128i step[3], row_lanes[3], limit[3];

@@ -1,6 +1,6 @@
 // Triangle setup shared by every path: the edges (area, order, ownership, pixel box) from the
 // snapped positions, and the planes of depth, 1/w and colour / w, as llvmpipe's setup builds them.
-// The triangle lists' faster setups (smooth_planes, setup8) are held to these bit for bit.
+// The triangle lists' faster setups (smooth_planes, wide/setup_group-inl.h) are held to these bit for bit.
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -188,6 +188,7 @@ using namespace detail;
 // triangles enclose no pixel centre; they are dropped here, once, by whichever thread meets them.
 void bin_range(const List& l, size_t first, size_t last, int units, uint32_t** out) {
   const int fb_w = l.fb.width, fb_h = l.fb.height;
+  if (detail::wide_kernels()) first = bin_wide(l, first, last, units, out);
   for (size_t tri = first; tri < last; ++tri) {
     if (l.idx && tri + kAhead < last)  // indexed vertices are scattered: ask for them early
       for (int k = 0; k < 3; ++k) __builtin_prefetch(&l.vs.snapped[l.idx[3 * (tri + kAhead) + k]]);
@@ -210,10 +211,6 @@ void bin_range(const List& l, size_t first, size_t last, int units, uint32_t** o
 void bin_share(const List& l, size_t first, size_t last, int units, uint32_t* const* lists, size_t* counts) {
   uint32_t* out[kMaxThreads];  // write pointers, kept in registers rather than counts in memory
   for (int o = 0; o < units; ++o) out[o] = lists[o];
-#if FFCOMPAT_X86
-  if (detail::wide_kernels() && l.vs.snapped.size() <= size_t(INT32_MAX))  // gathers take signed 32-bit indices
-    first = bin16(l, first, last, units, out);
-#endif
   bin_range(l, first, last, units, out);
   for (int o = 0; o < units; ++o) counts[o] = size_t(out[o] - lists[o]);
 }
@@ -221,23 +218,7 @@ void bin_share(const List& l, size_t first, size_t last, int units, uint32_t* co
 // Rasterization: what every binning share kept for this thread, in primitive order.
 template <detail::DepthMode D>
 void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
-  for (int share = 0; share < shares; ++share) {
-    const uint32_t* list = in[share];
-    const size_t n = counts[share];
-    for (size_t e = 0; e < n; ++e) {
-      if (e + kAhead < n) {
-        const std::array<size_t, 3> ahead = l.corners(list[e + kAhead] & ~kClipped);
-        for (size_t a : ahead) __builtin_prefetch(&l.vs.snapped[a]), __builtin_prefetch(&l.vs.hot[a]);
-      }
-      const std::array<size_t, 3> vi = l.corners(list[e] & ~kClipped);
-      if (list[e] & kClipped) {
-        draw_clipped(l, vi, mine);
-        continue;
-      }
-      const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
-      draw_one<D>(l, vi, p, mine);
-    }
-  }
+  for_each_binned(l, mine, in, counts, shares, [&](const std::array<size_t, 3>& vi, const Snapped (&p)[3]) { draw_one<D>(l, vi, p, mine); });
 }
 
 void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
@@ -253,7 +234,7 @@ void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const 
   bins.lists.resize(size_t(units * units));
   for (int share = 0; share < units; ++share) {
     const size_t n = triangles * size_t(share + 1) / size_t(units) - triangles * size_t(share) / size_t(units);
-    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n + 16);  // + bin16's last store
+    for (int o = 0; o < units; ++o) bins.lists[size_t(share * units + o)].resize(n + kBinSlack);  // + the vector code's last store or load
   }
   size_t counts[kMaxThreads][kMaxThreads] = {};
   auto bin = [&](int share) {
@@ -272,10 +253,7 @@ void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const 
     size_t n[kMaxThreads];
     for (int share = 0; share < units; ++share)
       in[share] = bins.lists[size_t(share * units + owner)].data(), n[share] = counts[share][owner];
-#if FFCOMPAT_X86
-    if (detail::wide_kernels() && !s.flat && !s.add_secondary && !s.cull && !s.two_side)
-      return with_depth_mode(s, [&](auto mode) { draw_bins_wide<decltype(mode)::value>(l, mine, in, n, units); });
-#endif
+    if (detail::wide_kernels()) return draw_bins_wide(depth_mode(s), l, mine, in, n, units);
     with_depth_mode(s, [&](auto mode) { draw_bins<decltype(mode)::value>(l, mine, in, n, units); });
   };
   if (units == 1) return bin(0), draw(0);

@@ -1,7 +1,8 @@
 // Triangles that share their vertices, as glDrawArrays, glDrawElements and immediate mode give
 // them. Each vertex is mapped to the window once; each triangle is binned once, as a 4-byte
-// number, to the threads whose bands of rows it meets (sixteen triangles at a time with AVX-512),
-// and set up where it is drawn: eight at a time for the box kernel (raster/avx512/kernels.h) when the state
+// number, to the threads whose bands of rows it meets (a vector of triangles at a time on a Highway
+// vector target), and set up where it is drawn: a group at a time (eight on AVX2 and AVX-512) for
+// the box kernel (raster/wide/) when the state
 // is smooth colour without secondary colour, culling or two-sided lighting, one by one otherwise.
 #pragma once
 #include <climits>

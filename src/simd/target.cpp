@@ -26,10 +26,15 @@ std::string name_of(int64_t bit) {
   return hwy::TargetName(bit);
 }
 
+bool vectors_now() { return (hwy::SupportedTargets() & HWY_TARGETS & ~kPortable) != 0; }
+
+int64_t g_applied = 0;  // the restriction in force (0: none), for restrict() to keep on failure
+
 // Highway's bits are ordered best first (a lower bit is a better target), so "this one and
 // worse" is every bit from it upwards; the portable target stays as the fallback of every
 // restriction.
 void apply(int64_t bit) {
+  g_applied = bit;
   if (bit == 0) {
     hwy::SetSupportedTargetsForTest(0);
   } else {
@@ -38,9 +43,12 @@ void apply(int64_t bit) {
   }
   // Dispatch tables chose at their first call; make them choose again.
   hwy::GetChosenTarget().Update(hwy::SupportedTargets());
+  g_vector_target = vectors_now();
 }
 
 }  // namespace
+
+bool g_vector_target = vectors_now();
 
 int64_t target_bit(const std::string& name) {
   for (const Name& n : kNames)
@@ -74,16 +82,15 @@ std::string current() {
 }
 
 bool restrict(const std::string& name) {
-  static int64_t restricted = 0;  // the bit in force (0: none), kept when a request is refused
   int64_t bit = name.empty() ? 0 : target_bit(name);
   if (name == "scalar") bit = HWY_TARGETS & kPortable & -(HWY_TARGETS & kPortable);
   if (!name.empty()) {
     // Whether the CPU runs it and the build has it, with any earlier restriction lifted to ask.
     hwy::SetSupportedTargetsForTest(0);
     const bool there = bit && (hwy::SupportedTargets() & HWY_TARGETS & bit);
-    if (!there) return apply(restricted), false;
+    if (!there) return apply(g_applied), false;  // the restriction before, as it was
   }
-  apply(restricted = bit);
+  apply(bit);
   return true;
 }
 

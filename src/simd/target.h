@@ -28,6 +28,11 @@ std::string current();
 // that run each target in turn; not thread-safe against kernels running at the same time.
 bool restrict(const std::string& name);
 
+// Whether the dispatch now picks a vector target rather than the portable one ("scalar"): where
+// it does not, the rasterizer runs its scalar loops (FFCOMPAT_SCALAR=1 keeps meaning those).
+extern bool g_vector_target;
+inline bool vector_target() { return g_vector_target; }
+
 // Highway's target bit for one of our names, or 0 when the name is unknown.
 int64_t target_bit(const std::string& name);
 

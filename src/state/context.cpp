@@ -6,6 +6,8 @@
 // assembly primitive.cpp.
 #include "state/context.h"
 
+#include "simd/target.h"
+
 namespace ffc::state {
 
 namespace {
@@ -18,6 +20,7 @@ void Context::make_current(Context* c) { g_current = c; }
 Context::Context(int width, int height, Precision precision)
     : fb_(width, height), precision_(precision), viewport_(0, 0, width, height) {
   lights_[0].diffuse = lights_[0].specular = glm::dvec4(1);
+  simd::configure_from_environment();  // FFCOMPAT_SIMD / FFCOMPAT_SCALAR, before the first kernel
 }
 
 GLenum Context::GetError() {

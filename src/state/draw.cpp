@@ -3,19 +3,10 @@
 // vertex, then primitive assembly) for everything else.
 #include <algorithm>
 
-#include "raster/isa.h"
-#if FFCOMPAT_X86
-#include <immintrin.h>
-
-// GCC 12's AVX-512 headers start some results from _mm512_undefined_*, which -Wuninitialized
-// reports wherever they are inlined.
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-
 #include "state/client_arrays.h"
 #include "state/context.h"
 #include "state/gl_rules.h"
+#include "simd/index_range.h"
 
 namespace ffc::state {
 
@@ -125,47 +116,8 @@ void Context::draw_elements(GLenum mode, GLsizei count, GLenum type, const void*
   flush_primitive();
   elements_.clear();
 }
-// Sixteen at a time with AVX-512 where the CPU has it, else four at a time in SSE2 (which
-// compares signed: the top bit is flipped first); without x86 intrinsics, one at a time.
-#if FFCOMPAT_X86
-namespace {
-__attribute__((target("avx512f"))) void index_range_wide(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
-  __m512i vlo = _mm512_set1_epi32(-1), vhi = _mm512_setzero_si512();
-  size_t i = 0;
-  for (; i + 16 <= n; i += 16) {
-    const __m512i v = _mm512_loadu_si512(u + i);
-    vlo = _mm512_min_epu32(vlo, v), vhi = _mm512_max_epu32(vhi, v);
-  }
-  lo = _mm512_reduce_min_epu32(vlo), hi = _mm512_reduce_max_epu32(vhi);
-  for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
-}
-}  // namespace
-
-void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
-  static const bool wide = __builtin_cpu_supports("avx512f");
-  if (wide) return index_range_wide(u, n, lo, hi);
-  const __m128i flip = _mm_set1_epi32(INT32_MIN);
-  __m128i vlo = _mm_set1_epi32(INT32_MAX), vhi = _mm_set1_epi32(INT32_MIN);
-  size_t i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const __m128i v = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(u + i)), flip);
-    const __m128i less = _mm_cmplt_epi32(v, vlo), more = _mm_cmpgt_epi32(v, vhi);
-    vlo = _mm_or_si128(_mm_and_si128(less, v), _mm_andnot_si128(less, vlo));
-    vhi = _mm_or_si128(_mm_and_si128(more, v), _mm_andnot_si128(more, vhi));
-  }
-  alignas(16) uint32_t l[4], h[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(l), _mm_xor_si128(vlo, flip));
-  _mm_store_si128(reinterpret_cast<__m128i*>(h), _mm_xor_si128(vhi, flip));
-  lo = UINT32_MAX, hi = 0;
-  for (int k = 0; k < 4 && i >= 4; ++k) lo = std::min(lo, l[k]), hi = std::max(hi, h[k]);
-  for (; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
-}
-#else
-void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) {
-  lo = UINT32_MAX, hi = 0;
-  for (size_t i = 0; i < n; ++i) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
-}
-#endif
+// A vector at a time on the dispatched Highway target (src/simd/index_range.cpp).
+void index_range(const uint32_t* u, size_t n, uint32_t& lo, uint32_t& hi) { simd::index_range(u, n, lo, hi); }
 
 bool Context::triangle_list_path(GLenum mode) const {
   // Fog, polygon offset, the per-fragment operations and glPolygonMode are applied by the general path only

@@ -23,7 +23,7 @@
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/image.h"
-#include "raster/avx512/kernels.h"
+#include "raster/wide/kernels.h"
 #include "state/context.h"
 
 namespace ffc {

@@ -1,15 +1,16 @@
 // The triangle-list path (GL_TRIANGLES from glDrawArrays, glDrawElements or immediate mode:
 // vertices lit in batches, triangles binned to the threads that own their rows) draws what the
 // general path draws (vertex by vertex, triangles set up and then rasterized), bit for bit,
-// whatever the state and the number of threads; and with the box kernel and the eight-triangle
-// setup (raster/avx512/) what the scalar row loop draws.
+// whatever the state and the number of threads; and with the Highway kernels (raster/wide/), on
+// every target the CPU runs, what the scalar row loop draws.
 #include <gtest/gtest.h>
 
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
-#include "raster/avx512/kernels.h"
+#include "raster/wide/kernels.h"
 #include "scene/scene.h"
+#include "simd/target.h"
 #include "state/context.h"
 
 namespace ffc {
@@ -105,10 +106,15 @@ TEST_P(TriangleList, DrawsWhatTheGeneralPathDraws) {
   const scene::Description& d = GetParam().d;
   const image::Image general = draw(d, scene::DrawPath::Immediate, 1, false, false);
   EXPECT_GT(drawn_share(general), 0.005) << "a picture with something in it";
-  for (int threads : {1, 2, 3})
-    for (auto path : {scene::DrawPath::Elements, scene::DrawPath::Arrays, scene::DrawPath::Immediate})
-      EXPECT_EQ(image::compare(general, draw(d, path, threads)).max_diff, 0) << threads << " " << scene::to_string(path);
-  EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Elements, 2, false)).max_diff, 0) << "general path, box kernel";
+  // On every Highway target this CPU runs ("scalar": the scalar loops).
+  for (const std::string& target : simd::available()) {
+    ASSERT_TRUE(simd::restrict(target)) << target;
+    for (int threads : {1, 2, 3})
+      for (auto path : {scene::DrawPath::Elements, scene::DrawPath::Arrays, scene::DrawPath::Immediate})
+        EXPECT_EQ(image::compare(general, draw(d, path, threads)).max_diff, 0) << target << " " << threads << " " << scene::to_string(path);
+    EXPECT_EQ(image::compare(general, draw(d, scene::DrawPath::Elements, 2, false)).max_diff, 0) << target << ": general path, kernels";
+  }
+  simd::restrict("");
 }
 
 INSTANTIATE_TEST_SUITE_P(States, TriangleList, ::testing::ValuesIn(cases()),

@@ -1,8 +1,9 @@
-// The AVX-512 kernels (raster/avx512/: the box kernel for boxes of at most 8x8 pixel centres,
-// the span kernel for long rows of large triangles, the rows kernel) and the eight-triangle setup
-// of triangle lists draw what the row loop draws, bit for bit: many small triangles of random
-// size, place, depth, 1/w and colour, under every depth function, with 1 to 3 threads (rows in
-// bands of 64), cut by the framebuffer's edges.
+// The Highway kernels (raster/wide/: the box kernel for boxes of at most 8x8 pixel centres, the
+// span kernel for long rows of large triangles, the rows kernel, the triangle lists' draw loop),
+// on every vector target this CPU runs (AVX-512, AVX2, SSE4, SSSE3; NEON), draw what the scalar
+// row loop draws, bit for bit: many small triangles of random size, place, depth, 1/w and colour,
+// under every depth function, with 1 to 3 threads (rows in bands of 64), cut by the
+// framebuffer's edges.
 #include <gtest/gtest.h>
 
 #include "triangles.h"
@@ -15,7 +16,7 @@ using namespace raster_test;
 class BoxKernel : public ::testing::TestWithParam<GLenum> {
  protected:
   void SetUp() override {
-    if (!raster::detail::wide_kernels()) GTEST_SKIP() << "no kernels: no AVX-512VL, or built without x86 intrinsics";
+    if (vector_targets().empty()) GTEST_SKIP() << "no vector target: Highway's portable one only";
   }
 };
 
@@ -26,26 +27,32 @@ TEST_P(BoxKernel, DrawsWhatTheScalarRowLoopDraws) {
   for (float size : {3.0f, 6.0f, 9.0f, 14.0f, 40.0f}) {
     const Triangles t = random_triangles(3000, size, unsigned(func) * 31 + unsigned(size));
     const Drawn scalar = draw(t, func, 1, false, false);
-    for (int threads : {1, 2, 3})
-      for (bool lists : {true, false}) {
-        const Drawn wide = draw(t, func, threads, true, lists);
-        EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << lists << ", " << size << " px, " << threads;
-        EXPECT_TRUE(scalar.depth == wide.depth) << lists << ", " << size << " px, " << threads;
-      }
+    for (const std::string& target : vector_targets()) {
+      const OnTarget on(target);
+      for (int threads : {1, 2, 3})
+        for (bool lists : {true, false}) {
+          const Drawn wide = draw(t, func, threads, true, lists);
+          EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << target << ", " << lists << ", " << size << " px, " << threads;
+          EXPECT_TRUE(scalar.depth == wide.depth) << target << ", " << lists << ", " << size << " px, " << threads;
+        }
+    }
   }
 }
 
 // Triangles across the bands' edges: each thread draws its own rows of them, no more, no fewer.
 TEST(BoxKernelBands, TrianglesAcrossBandEdgesDrawEachRowOnce) {
-  if (!raster::detail::wide_kernels()) GTEST_SKIP() << "no kernels: no AVX-512VL, or built without x86 intrinsics";
+  if (vector_targets().empty()) GTEST_SKIP() << "no vector target: Highway's portable one only";
   for (float size : {2.0f, 3.0f, 6.0f}) {
     const Triangles t = random_triangles(4000, size, 11 + unsigned(size), true);
     for (GLenum func : {GL_LESS, GL_ALWAYS}) {
       const Drawn scalar = draw(t, func, 1, false, false);
-      for (int threads : {2, 3}) {
-        const Drawn wide = draw(t, func, threads, true, true);
-        EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << size << " px, " << threads;
-        EXPECT_TRUE(scalar.depth == wide.depth) << size << " px, " << threads;
+      for (const std::string& target : vector_targets()) {
+        const OnTarget on(target);
+        for (int threads : {2, 3}) {
+          const Drawn wide = draw(t, func, threads, true, true);
+          EXPECT_EQ(image::compare(scalar.picture, wide.picture).max_diff, 0) << target << ", " << size << " px, " << threads;
+          EXPECT_TRUE(scalar.depth == wide.depth) << target << ", " << size << " px, " << threads;
+        }
       }
     }
   }

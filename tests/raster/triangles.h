@@ -7,7 +7,8 @@
 #include "backends/backend.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
-#include "raster/avx512/kernels.h"
+#include "raster/wide/kernels.h"
+#include "simd/target.h"
 #include "raster/raster.h"
 #include "raster/reference.h"
 #include "state/context.h"
@@ -41,6 +42,22 @@ inline Triangles random_triangles(int n, float size, unsigned seed, bool across_
   }
   return t;
 }
+
+// The vector targets this CPU runs (simd::available() but the portable "scalar", whose draws
+// are the scalar loops'), best first: each is held to the scalar loops in turn.
+inline std::vector<std::string> vector_targets() {
+  std::vector<std::string> out;
+  for (const std::string& t : simd::available())
+    if (t != "scalar") out.push_back(t);
+  return out;
+}
+// Dispatches to `target` (and worse) while it lives.
+struct OnTarget {
+  explicit OnTarget(const std::string& target) { EXPECT_TRUE(simd::restrict(target)) << target; }
+  ~OnTarget() { simd::restrict(""); }
+  OnTarget(const OnTarget&) = delete;
+  OnTarget& operator=(const OnTarget&) = delete;
+};
 
 struct Drawn {
   image::Image picture;

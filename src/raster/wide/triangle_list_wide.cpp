@@ -1,0 +1,203 @@
+// The triangle lists' draw loop and binning (triangle_list.cpp's draw_bins and bin_range)
+// compiled once per Highway target: the kernels of kernels-inl.h inlined into the loop (no call per
+// triangle), triangles set up a group at a time where the state allows it (setup_group-inl.h), and
+// binned a vector of triangles at a time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/wide/triangle_list_wide.cpp"
+#include "raster/wide/targets.h"  // before Highway: the targets we compile
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <climits>
+
+#include "raster/triangle_list_parts.h"
+#include "raster/wide/kernels-inl.h"
+#include "raster/wide/setup_group-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ffc::raster::detail::HWY_NAMESPACE {
+
+template <DepthMode Mode>
+uint64_t DrawOne(const List& l, const Bands& mine, const std::array<size_t, 3>& vi, const Snapped (&p)[3]) {
+  Triangle t;
+  bool back, swapped;
+  std::array<size_t, 3> order;
+  if (!setup_one(l, vi, p, t, back, swapped, order)) return 0;
+  return Rasterize<Mode>(l.fb, t, l.s.depth_func, mine, [&] { return list_planes(l, vi, t, back, swapped, order); });
+}
+
+template <DepthMode Mode>
+void DrawBins(const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+  uint64_t nonfinite = 0;
+  for_each_binned(l, mine, in, counts, shares, [&](const std::array<size_t, 3>& vi, const Snapped (&p)[3]) { nonfinite += DrawOne<Mode>(l, mine, vi, p); });
+  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+}
+
+#if FFCOMPAT_SETUP_GROUP
+// The corners of the list entries [0, lanes) (lanes past them repeat the last), built as vectors
+// (the setup loads them as vectors, which lane-by-lane stores would stall). Returns the lanes to
+// clip. Corner numbers in 31 bits and twice them in 32 (the caller checks).
+HWY_INLINE unsigned GroupCorners(const List& l, const uint32_t* entries, size_t lanes, int32_t (&corner)[3][kGroup]) {
+  const hn::RebindToSigned<GroupF> di;
+  const hn::RebindToUnsigned<GroupF> du;
+  const auto entry = hn::IfThenElse(hn::FirstN(du, lanes), hn::LoadU(du, entries), hn::Set(du, entries[lanes - 1]));
+  const auto tri = hn::BitCast(di, hn::And(entry, hn::Set(du, ~kClipped)));
+  const auto first = hn::Add(tri, hn::Add(tri, tri));  // 3 tri
+  for (int k = 0; k < 3; ++k) {
+    const auto c = l.idx ? hn::GatherIndex(di, reinterpret_cast<const int32_t*>(l.idx) + k, first)
+                         : hn::Add(first, hn::Set(di, int32_t(3 * l.base) + k));
+    hn::Store(c, di, corner[k]);
+  }
+  return MaskBits(di, hn::Lt(hn::BitCast(di, entry), hn::Zero(di)));
+}
+
+// draw_bins for states SetupTriangles covers: kGroup triangles set up at once, each then drawn by
+// the box kernel (nearly all of a subdivided sphere's) or, larger, by Rasterize.
+template <DepthMode Mode>
+void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+  uint64_t nonfinite = 0;
+  const GLenum func = l.s.depth_func;
+  for (int share = 0; share < shares; ++share) {
+    const uint32_t* list = in[share];
+    const size_t n = counts[share];
+    for (size_t e = 0; e < n; e += kGroup) {
+      const size_t lanes = std::min(kGroup, n - e);
+      for (size_t a = e + kGroup; a < std::min(e + 2 * kGroup, n); ++a)
+        for (size_t v : l.corners(list[a] & ~kClipped)) __builtin_prefetch(&l.vs.snapped[v]), __builtin_prefetch(&l.vs.hot[v]);
+      alignas(64) int32_t corner[3][kGroup];
+      const unsigned clipped = GroupCorners(l, list + e, lanes, corner);
+      SetupGroup g;
+      SetupTriangles(l.vs, corner, l.fb.width, l.fb.height, g);
+      for (size_t lane = 0; lane < lanes; ++lane) {
+        const std::array<size_t, 3> vi = {size_t(corner[0][lane]), size_t(corner[1][lane]), size_t(corner[2][lane])};
+        const KernelPlanes kp{&g.z[0][lane], &g.f[0][lane], int(kGroup)};
+        const int xmin = g.edges[kXmin][lane], ymin = g.edges[kYmin][lane], w = g.edges[kXmax][lane] - xmin + 1;
+        if (clipped >> lane & 1) {
+          draw_clipped(l, vi, mine);
+        } else if (g.tiny >> lane & 1) {
+          // At most 2x2 centres, their coverage known: most such triangles at high subdivision
+          // cover none.
+          unsigned bits = unsigned(g.cover[lane]);
+          if (!mine.owns(ymin / kBandRows)) bits &= 0xC;
+          if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
+          if (!bits || !(g.ok >> lane & 1)) continue;
+          nonfinite += TinyShade<Mode>(l.fb, kp, xmin, ymin, w, bits, func);
+        } else if (g.box >> lane & 1) {
+          if (!(g.ok >> lane & 1)) continue;  // not drawn, as smooth_planes decides
+          nonfinite += BoxDraw<Mode>(l.fb, {&g.edges[0][lane], int(kGroup)}, kp, mine, func);
+        } else if (!(g.none >> lane & 1)) {
+          const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
+          nonfinite += DrawOne<Mode>(l, mine, vi, p);
+        }
+      }
+    }
+  }
+  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+}
+#endif
+
+void DrawBinsWide(DepthMode mode, const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+#if FFCOMPAT_SETUP_GROUP
+  const State& s = l.s;
+  // Corner numbers, three times a triangle's and twice a corner's in 31 bits: vectors of them.
+  const bool fits = 3 * (l.base + l.count) < size_t(INT32_MAX) && l.vs.snapped.size() <= size_t(INT32_MAX / 2);
+  if (fits && !s.flat && !s.add_secondary && !s.cull && !s.two_side) {
+    switch (mode) {
+      case kNoDepth: return DrawBinsGrouped<kNoDepth>(l, mine, in, counts, shares);
+      case kLess: return DrawBinsGrouped<kLess>(l, mine, in, counts, shares);
+      case kLequal: return DrawBinsGrouped<kLequal>(l, mine, in, counts, shares);
+      case kAnyDepth: return DrawBinsGrouped<kAnyDepth>(l, mine, in, counts, shares);
+    }
+  }
+#endif
+  switch (mode) {
+    case kNoDepth: return DrawBins<kNoDepth>(l, mine, in, counts, shares);
+    case kLess: return DrawBins<kLess>(l, mine, in, counts, shares);
+    case kLequal: return DrawBins<kLequal>(l, mine, in, counts, shares);
+    case kAnyDepth: return DrawBins<kAnyDepth>(l, mine, in, counts, shares);
+  }
+}
+
+// bin_range's binning a vector of triangles at a time (lanes are triangles); returns the first
+// triangle not binned (fewer than a vector remain).
+size_t BinWide(const List& l, size_t first, size_t last, int units, uint32_t** out) {
+#if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
+  (void)l, (void)last, (void)units, (void)out;
+  return first;
+#else
+  static_assert((kBandRows & (kBandRows - 1)) == 0, "bands by a shift");
+  constexpr int kShift = __builtin_ctz(kBandRows);
+  const hn::ScalableTag<int32_t> di;
+  const hn::RebindToUnsigned<decltype(di)> du;
+  const hn::RebindToFloat<decltype(di)> df;
+  using VI = hn::Vec<decltype(di)>;
+  const size_t n = hn::Lanes(di);
+  static_assert(hn::MaxLanes(decltype(di)()) <= kBinSlack, "the lists have room for a vector's store past their end");
+  const VI lane = hn::Iota(di, 0), three = hn::Set(di, 3);
+  const VI k127 = hn::Set(di, 127), k128 = hn::Set(di, 128), zero = hn::Zero(di);
+  const VI last_col = hn::Set(di, l.fb.width - 1), last_row = hn::Set(di, l.fb.height - 1);
+  const VI not_mapped = hn::Set(di, kNotMapped), span = hn::Set(di, units - 1), vunits = hn::Set(di, units);
+  const auto per_unit = hn::Set(df, 1.0f / float(units));
+  const int32_t* snapped = &l.vs.snapped.data()->x;
+  size_t tri = first;
+  for (; tri + n <= last; tri += n) {
+    VI c[3];
+    if (l.idx) {
+      hn::Vec<decltype(du)> u[3];
+      hn::LoadInterleaved3(du, l.idx + 3 * tri, u[0], u[1], u[2]);
+      for (int k = 0; k < 3; ++k) c[k] = hn::BitCast(di, u[k]);
+    } else {
+      for (int k = 0; k < 3; ++k) c[k] = hn::Add(hn::Set(di, int32_t(3 * (l.base + tri)) + k), hn::Mul(lane, three));
+    }
+    VI x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+      const VI at = hn::ShiftLeft<1>(c[k]);
+      x[k] = hn::GatherIndex(di, snapped, at), y[k] = hn::GatherIndex(di, snapped + 1, at);
+    }
+    const auto clipped = hn::Or(hn::Or(hn::Eq(x[0], not_mapped), hn::Eq(x[1], not_mapped)), hn::Eq(x[2], not_mapped));
+    const VI ylo = hn::Min(y[0], hn::Min(y[1], y[2])), yhi = hn::Max(y[0], hn::Max(y[1], y[2]));
+    const VI xlo = hn::Min(x[0], hn::Min(x[1], x[2])), xhi = hn::Max(x[0], hn::Max(x[1], x[2]));
+    const VI row_lo = hn::Max(zero, hn::ShiftRight<8>(hn::Add(ylo, k127))), row_hi = hn::Min(last_row, hn::ShiftRight<8>(hn::Sub(yhi, k128)));
+    const VI col_lo = hn::Max(zero, hn::ShiftRight<8>(hn::Add(xlo, k127))), col_hi = hn::Min(last_col, hn::ShiftRight<8>(hn::Sub(xhi, k128)));
+    const auto keep = hn::AndNot(clipped, hn::Not(hn::Or(hn::Gt(row_lo, row_hi), hn::Gt(col_lo, col_hi))));
+    const VI band_lo = hn::ShiftRight<kShift>(row_lo);
+    const VI bands = hn::Min(hn::Sub(hn::ShiftRight<kShift>(row_hi), band_lo), span);  // met, less one
+    // band_lo % units: the quotient of (band_lo + 0.5) / units is never near a whole number.
+    const VI q = hn::ConvertTo(di, hn::Mul(hn::Add(hn::ConvertTo(df, band_lo), hn::Set(df, 0.5f)), per_unit));
+    const VI first_owner = hn::Sub(band_lo, hn::Mul(q, vunits));
+    const VI ids = hn::Add(hn::Set(di, int32_t(tri)), lane);
+    const VI marked = hn::IfThenElse(clipped, hn::Or(ids, hn::Set(di, int32_t(kClipped))), ids);
+    for (int o = 0; o < units; ++o) {
+      // Owner o's distance past the first owner, around the units.
+      VI d = hn::Sub(hn::Set(di, o), first_owner);
+      d = hn::IfThenElse(hn::Lt(d, zero), hn::Add(d, vunits), d);
+      const auto mine = hn::Or(clipped, hn::AndNot(hn::Gt(d, bands), keep));
+      // Compress, then a plain store: Zen 4 runs AVX-512's compressing store to memory slowly.
+      hn::StoreU(hn::Compress(marked, mine), di, reinterpret_cast<int32_t*>(out[o]));
+      out[o] += hn::CountTrue(di, mine);
+    }
+  }
+  return tri;
+#endif
+}
+
+}  // namespace ffc::raster::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ffc::raster::detail {
+
+HWY_EXPORT(DrawBinsWide);
+HWY_EXPORT(BinWide);
+
+void draw_bins_wide(DepthMode mode, const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+  HWY_DYNAMIC_DISPATCH(DrawBinsWide)(mode, l, mine, in, counts, shares);
+}
+
+size_t bin_wide(const List& l, size_t first, size_t last, int units, uint32_t** out) {
+  if (l.vs.snapped.size() > size_t(INT32_MAX / 2) || 3 * (l.base + last) >= size_t(INT32_MAX)) return first;  // 32-bit lanes
+  return HWY_DYNAMIC_DISPATCH(BinWide)(l, first, last, units, out);
+}
+
+}  // namespace ffc::raster::detail
+#endif  // HWY_ONCE
