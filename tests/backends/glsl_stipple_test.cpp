@@ -80,8 +80,8 @@ TEST(GlslStipple, LinesStripsAndLoopsAsMesa) {
 }
 
 // A horizontal line through GL's row 4 of a `w` x 8 window, stippled at factor / 0x00FF: as
-// GL_LINES from 0 to `mid` and from `mid` to `w`, or as a strip through the same three points.
-Pictures horizontal(GLenum mode, int w, float mid, GLint factor) {
+// GL_LINES from `from` to `mid` and from `mid` to `w`, or as a strip through the same three points.
+Pictures horizontal(GLenum mode, int w, float mid, GLint factor, float from = 0) {
   return draw_both(w, 8, [=] {
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -92,7 +92,7 @@ Pictures horizontal(GLenum mode, int w, float mid, GLint factor) {
     glLineStipple(factor, 0x00FF);
     glColor3f(1, 1, 1);
     glBegin(mode);
-    glVertex2f(0, 4.5f), glVertex2f(mid, 4.5f);
+    glVertex2f(from, 4.5f), glVertex2f(mid, 4.5f);
     if (mode == GL_LINES) glVertex2f(mid, 4.5f);
     glVertex2f(float(w), 4.5f);
     glEnd();
@@ -149,17 +149,45 @@ TEST(GlslStipple, FogWithStippleIsReported) {
   EXPECT_EQ(p.unsupported.front(), "line stipple with fog");
 }
 
-// Lines the view volume clips: Mesa stipples the clipped line, which the cut does not yet.
-TEST(GlslStipple, ClippedLinesAreReported) {
+// A line from 10 pixels left of the window: the clipper cuts it at the window's left edge, and
+// the pattern starts there (pixels 0 .. 15 on, 16 .. 31 off at factor 2), not 10 pixels earlier.
+TEST(GlslStipple, PatternStartsWhereTheClipperCuts) {
   if (!egl_here()) GTEST_SKIP();
-  const Pictures p = draw_both(32, 8, [] {
-    glEnable(GL_LINE_STIPPLE);
-    glBegin(GL_LINES);
-    glVertex2f(-1.5f, 0.1f), glVertex2f(0.9f, 0.1f);
-    glEnd();
-  });
-  ASSERT_EQ(p.unsupported.size(), 1u);
-  EXPECT_EQ(p.unsupported.front(), "line stipple of lines the view volume clips");
+  const Pictures p = horizontal(GL_LINES, 64, 32, 2, -10);
+  EXPECT_TRUE(p.unsupported.empty());
+  for (int x = 1; x < 15; ++x) EXPECT_TRUE(lit(p.glsl, x)) << x;
+  for (int x = 17; x < 31; ++x) EXPECT_FALSE(lit(p.glsl, x)) << x;
+  EXPECT_LE(image::compare(p.mesa, p.glsl).max_diff, 1);
+}
+
+// Lines the view volume clips, at the window's sides and across the near and far planes: Mesa
+// stipples the clipped line, its pattern starting where the clipper cut it.
+TEST(GlslStipple, ClippedLinesAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  for (GLenum mode : {GL_LINES, GL_LINE_STRIP})
+    for (GLenum shade : {GL_SMOOTH, GL_FLAT}) {
+      SCOPED_TRACE(testing::Message() << "mode " << mode << " shade 0x" << std::hex << shade);
+      const Pictures p = draw_both(96, 96, [=] {
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glFrustum(-1, 1, -1, 1, 1, 20);
+        glShadeModel(shade);
+        glEnable(GL_LINE_STIPPLE);
+        glLineStipple(2, 0x0F0F);
+        glBegin(mode);
+        for (int i = 0; i < 10; ++i) {
+          const float a = 1.3f * float(i);
+          glColor3f(0.1f * float(i), 1 - 0.1f * float(i), 0.5f);
+          glVertex3f(1.9f * std::cos(a) + 0.013f, 1.7f * std::sin(a) + 0.021f, i % 3 == 0 ? -0.4f : -2.5f - 2.9f * float(i));
+        }
+        glEnd();
+      });
+      EXPECT_TRUE(p.unsupported.empty()) << p.unsupported.front();
+      const image::Diff c = image::compare(p.mesa, p.glsl);
+      EXPECT_LE(c.max_diff, 1);
+    }
 }
 
 }  // namespace

@@ -65,11 +65,14 @@ void cut_stippled(const std::vector<CapturedVertex>& lines, const StippleRule& r
   const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
   const float x_offset = float(vp[0]) + hw, y_offset = float(r.fb_height) - (float(vp[1]) + hh);
   const float dn = float(r.depth_range.x), df = float(r.depth_range.y);
-  auto end = [&](const CapturedVertex& v) {
-    const raster::FloatWindow f = raster::map_float(v.clip, rs);
+  rs.flat = r.flat;
+  // An end as Mesa's clipper leaves it (raster::clip_and_map, soft's own): an end inside the
+  // view volume is the captured vertex, drawn from its clip position; one the clipper made is
+  // drawn from its window position, like a cut point.
+  auto end = [](const raster::WindowVertex& w, const CapturedVertex& v, bool kept) {
     WindowEnd e;
-    e.x = f.x, e.y_down = f.y_down, e.z = f.z, e.inv_w = float(1 / double(v.clip.w));
-    e.color = v.front, e.clip = v.clip;
+    e.x = w.fx, e.y_down = w.y_down, e.z = float(w.pos.z), e.inv_w = float(w.inv_w);
+    e.color = glm::vec4(w.color), e.clip = v.clip, e.cut = !kept;
     return e;
   };
   const glm::vec4* provoking = nullptr;
@@ -88,7 +91,15 @@ void cut_stippled(const std::vector<CapturedVertex>& lines, const StippleRule& r
   int counter = 0;
   for (size_t l = 0; l + 1 < lines.size(); l += 2) {
     if (r.restart_each) counter = 0;
-    const WindowEnd a = end(lines[l]), b = end(lines[l + 1]);
+    raster::Vertex ends[2];
+    for (int k = 0; k < 2; ++k) {
+      const CapturedVertex& v = lines[l + size_t(k)];
+      ends[k].clip = glm::dvec4(v.clip), ends[k].front = ends[k].back = glm::dvec4(v.front);
+    }
+    const raster::WindowPolygon clipped = raster::clip_and_map(ends, 2, rs, &ends[1], true);
+    if (clipped.size() != 2) continue;  // outside the view volume: no pixel, no pattern bit
+    const WindowEnd a = end(clipped[0], lines[l], raster::outside_planes(lines[l].clip) == 0);
+    const WindowEnd b = end(clipped[1], lines[l + 1], raster::outside_planes(lines[l + 1].clip) == 0);
     provoking = &lines[l + 1].front;
     // One pattern bit per pixel of the major axis (soft's raster::draw_line, the same steps).
     const float length = std::max(std::fabs(a.x - b.x), std::fabs(a.y_down - b.y_down));
@@ -183,9 +194,6 @@ bool Renderer::stippled(const state::SinkState& s, GLenum mode, const DrawList& 
   gl_.Enable(GL_RASTERIZER_DISCARD);
   const CapturedDraw d = record(s, list, p);
   gl_.Disable(GL_RASTERIZER_DISCARD);
-  // Mesa stipples the lines its clipper made; the cut here starts from the whole line.
-  for (const CapturedVertex& v : d.vertices)
-    if (raster::outside_planes(glm::dvec4(v.clip)) != 0) return report("line stipple of lines the view volume clips"), false;
   StippleRule r;
   r.factor = std::clamp(int(s.fragment->stipple_factor), 1, 256), r.pattern = s.fragment->stipple_pattern;
   r.restart_each = mode == GL_LINES, r.flat = s.flat;

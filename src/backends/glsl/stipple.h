@@ -31,8 +31,8 @@ struct StippleRule {
   int fb_height = 0;          // the framebuffer's rows: llvmpipe measures y downwards from its top
 };
 
-// `lines` holds pairs (the list order, the provoking vertex second), all inside the view volume.
-// `out` gets pairs again: the pieces, each end's clip position chosen so that the core context's
+// `lines` holds pairs (the list order, the provoking vertex second), clipped here as Mesa clips
+// them before its stipple stage (the pattern starts where the clipped line does). `out` gets pairs again: the pieces, each end's clip position chosen so that the core context's
 // viewport transform puts it on the window position the cut lerped.
 void cut_stippled(const std::vector<CapturedVertex>& lines, const StippleRule& rule, std::vector<StippleVertex>& out);
 
