@@ -52,7 +52,6 @@ SinkState Context::sink_state() {
   const bool line_or_point_offset = (polygon_mode_[0] == GL_LINE || polygon_mode_[1] == GL_LINE) && s.offset_line;
   if (line_or_point_offset || ((polygon_mode_[0] == GL_POINT || polygon_mode_[1] == GL_POINT) && s.offset_point))
     s.unsupported.push_back("polygon offset of GL_LINE or GL_POINT polygons");
-  if (frag_.line_stipple) s.unsupported.push_back("line stipple");
   if (precision_ == Precision::Double) s.unsupported.push_back("double precision (the shaders are float)");
   return s;
 }

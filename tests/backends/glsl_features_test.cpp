@@ -11,33 +11,16 @@
 #include "backends/glsl/glsl_backend.h"
 #include "backends/glsl/vertex_compare.h"
 #include "egl_here.h"
+#include "glsl_pictures.h"
 #include "gl/dispatch.h"
 #include "image/compare.h"
 
 namespace ffc {
 namespace {
 
+using test::draw_both;
 using test::egl_here;
-
-struct Pictures {
-  image::Image mesa, glsl;
-  std::vector<std::string> unsupported;  // what the GLSL backend said it did not draw
-};
-
-Pictures draw_both(int w, int h, const std::function<void()>& draw) {
-  auto mesa = backends::make("mesa");
-  backends::GlslBackend ours;
-  mesa->begin(w, h), ours.begin(w, h);
-  ours.resume(), draw();
-  Pictures p;
-  p.glsl = ours.read();
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-  p.unsupported.assign(ours.renderer()->unsupported().begin(), ours.renderer()->unsupported().end());
-  mesa->resume(), draw();
-  p.mesa = mesa->read();
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-  return p;
-}
+using test::Pictures;
 
 void expect_as_mesa(const Pictures& p) {
   EXPECT_TRUE(p.unsupported.empty()) << p.unsupported.front();

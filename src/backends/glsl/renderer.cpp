@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "backends/glsl/point_ties.h"
 #include "backends/glsl/raster_features.h"
 #include "raster/raster.h"
 
@@ -55,11 +56,14 @@ Renderer::Renderer(const CoreGl& gl) : gl_(gl), vertices_(gl), elements_(gl, GL_
   gl_.GetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
   gl_.GetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
   if (format == GL_BGRA && type == GL_UNSIGNED_BYTE) read_format_ = GL_BGRA;
+  GLint vp[4] = {0, 0, 0, 0};  // a context's first viewport is its surface
+  gl_.GetIntegerv(GL_VIEWPORT, vp);
+  fb_height_ = vp[3];
 }
 
 Renderer::~Renderer() {
   for (auto& [k, p] : programs_) gl_.DeleteProgram(p.id);
-  materials_.destroy(gl_), edges_.destroy(gl_), pixels_.destroy(gl_);
+  materials_.destroy(gl_), edges_.destroy(gl_), pixels_.destroy(gl_), stipple_.destroy(gl_);
   gl_.DeleteBuffers(1, &tfb_);
   gl_.DeleteVertexArrays(1, &vao_);
 }
@@ -149,10 +153,13 @@ void Renderer::apply_fragment(const state::SinkState& s) {
   }
 }
 
+void Renderer::report(const std::string& what) {
+  if (unsupported_.insert(what).second)
+    std::fprintf(stderr, "ffcompat: the GLSL backend does not draw %s; drawn without it\n", what.c_str());
+}
+
 void Renderer::apply(const state::SinkState& s) {
-  for (const std::string& what : s.unsupported)
-    if (unsupported_.insert(what).second)
-      std::fprintf(stderr, "ffcompat: the GLSL backend does not draw %s; drawn without it\n", what.c_str());
+  for (const std::string& what : s.unsupported) report(what);
   gl_.Viewport(s.viewport.x, s.viewport.y, s.viewport.z, s.viewport.w);
   gl_.DepthRange(s.depth_range.x, s.depth_range.y);
   s.depth_test ? gl_.Enable(GL_DEPTH_TEST) : gl_.Disable(GL_DEPTH_TEST);
@@ -185,6 +192,8 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
   const DrawList list = listed(mode, indices, n, count, rule, list_, edges_.flags(s));
   if (list.count == 0) return;
+  static const std::string kTie = "points centred on a rounding tie (an odd size on a pixel edge, an even one on a pixel centre) as Mesa";
+  if (mode == GL_POINTS && !unsupported_.count(kTie) && point_on_tie(s, v, count, indices, n, fb_height_)) report(kTie);
   ++stats_.draws;
   Program& p = program_for(ProgramKey::of(s, phong_));
   ++p.info.draws;
@@ -196,6 +205,7 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   materials_.stream(gl_, s.vertex_materials);
   edges_.stream(gl_, s);
   if (capture_) return capture_draw(s, list, p);
+  if (s.fragment->line_stipple && (list.mode == GL_LINES || p.info.key.unfilled == GL_LINE) && stippled(s, mode, list, p)) return;
   submit(list);
 }
 
@@ -207,6 +217,10 @@ void Renderer::submit(const DrawList& list) {
 
 // Transform feedback writes each listed vertex's gl_Position and colours, in list order.
 void Renderer::capture_draw(const state::SinkState& s, const DrawList& list, const Program& p) {
+  captured_.push_back(record(s, list, p));
+}
+
+CapturedDraw Renderer::record(const state::SinkState& s, const DrawList& list, const Program& p) {
   const GLenum list_mode = list.mode;
   const size_t n = list.count;
   const size_t floats = 4 * p.info.sources.feedback.size();
@@ -230,7 +244,7 @@ void Renderer::capture_draw(const state::SinkState& s, const DrawList& list, con
     if (floats >= 12) std::memcpy(&cv.back, r + 8, 4 * sizeof(float));
     d.vertices.push_back(cv);
   }
-  captured_.push_back(std::move(d));
+  return d;
 }
 
 void Renderer::clear(const state::SinkState& s, GLbitfield mask) {

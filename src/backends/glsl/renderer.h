@@ -16,6 +16,7 @@
 #include "backends/glsl/material_stream.h"
 #include "backends/glsl/pixel_write.h"
 #include "backends/glsl/shader_gen.h"
+#include "backends/glsl/stipple.h"
 #include "backends/glsl/unfilled.h"
 #include "backends/glsl/uniform_cache.h"
 #include "backends/glsl/vertex_stream.h"
@@ -87,6 +88,9 @@ class Renderer final : public state::DrawSink {
   void apply_fragment(const state::SinkState& s);
   void submit(const DrawList& list);
   void capture_draw(const state::SinkState& s, const DrawList& list, const Program& p);
+  CapturedDraw record(const state::SinkState& s, const DrawList& list, const Program& p);
+  bool stippled(const state::SinkState& s, GLenum mode, const DrawList& list, const Program& p);  // stipple.h
+  void report(const std::string& what);  // a feature drawn without: one line on stderr, once
 
   const CoreGl& gl_;
   GLuint vao_ = 0, tfb_ = 0;
@@ -103,6 +107,9 @@ class Renderer final : public state::DrawSink {
   MaterialStream materials_;  // glMaterial inside glBegin/glEnd (material_stream.h)
   EdgeStream edges_;          // glPolygonMode's boundary flags (unfilled.h)
   PixelWriter pixels_;        // glDrawPixels and glBitmap (pixel_write.h)
+  StippleLines stipple_;      // line stipple (stipple.h)
+  std::vector<StippleVertex> pieces_;
+  int fb_height_ = 0;         // the surface's rows (its first viewport), for the stipple's window y
 };
 
 }  // namespace ffc::glsl
