@@ -184,6 +184,10 @@ void Context::ColorMaterial(GLenum face, GLenum mode) {
       mode != GL_AMBIENT_AND_DIFFUSE)
     return error(GL_INVALID_ENUM);
   if (face == cm_face_ && mode == cm_mode_) return;  // as Mesa: no flush, no tracking
+  // A colour set again after the one in the vbo format was copied is tracked with the mode being
+  // replaced first, then with the new one; the first colour since the format's reset only with the
+  // new one (measured: tests/state/color_material_test.cpp, ColorMaterialMeasured).
+  if (color_material_ && color_copied_in_format_) flush_current();
   cm_face_ = face, cm_mode_ = mode;
   model_.cm_faces = face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3;
   model_.cm_mode = mode;
@@ -231,6 +235,7 @@ void Context::update_color_material() {
 void Context::copy_pending() {
   const bool color_changed = color_ != flushed_color_;
   flushed_color_ = color_;
+  color_copied_in_format_ = color_size_ > 0;
   for (const PendingMaterial& p : pending_materials_)
     if (*p.dst != p.value) *p.dst = p.value, constants_dirty_ = true;
   if (color_changed) update_color_material();
@@ -245,6 +250,7 @@ void Context::flush_stored() {
   copy_pending();
   pending_materials_.clear();
   color_size_ = color_active_ = 0, normal_in_format_ = false;  // the vbo's vertex format is reset
+  color_copied_in_format_ = false;
   format_has_position_ = false;
 }
 void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
