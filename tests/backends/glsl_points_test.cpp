@@ -53,6 +53,35 @@ TEST(GlslPoints, SizesOnAndOffTiesAsMesa) {
     }
 }
 
+// Points are not polygons: two-sided lighting shows their front colours, culling and polygon
+// offset leave them alone, whatever the winding the strip drawing them has; fog and the depth
+// test apply. Lit, so within 1 step of Mesa.
+TEST(GlslPoints, NotCulledOrOffsetFrontColouredFoggedAsMesa) {
+  if (!egl_here()) GTEST_SKIP();
+  for (GLenum front : {GL_CCW, GL_CW}) {
+    const Pictures p = draw_both(64, 64, [&] {
+      pixel_units(64, 64);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      glFrontFace(front);
+      glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
+      glEnable(GL_POLYGON_OFFSET_FILL), glPolygonOffset(0, -1000);
+      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_LIGHTING), glEnable(GL_LIGHT0), glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+      const float back[4] = {1, 0, 0, 1};
+      glMaterialfv(GL_BACK, GL_DIFFUSE, back);
+      glEnable(GL_FOG), glFogi(GL_FOG_MODE, GL_LINEAR), glFogf(GL_FOG_START, -1), glFogf(GL_FOG_END, 3);
+      glPointSize(3);
+      glNormal3f(0, 0, 1);
+      glBegin(GL_POINTS);
+      for (int i = 0; i < 6; ++i) glVertex3f(8.0f + 9.0f * float(i) + 0.25f * float(i % 4), 32.5f, -0.9f + 0.3f * float(i));
+      glEnd();
+    });
+    EXPECT_TRUE(p.unsupported.empty());
+    EXPECT_LE(image::compare(p.mesa, p.glsl).max_diff, 1) << (front == GL_CW ? "cw" : "ccw");
+    EXPECT_GT(p.glsl.at(8, 31)[1], 60);  // drawn, not culled, in the front colour (the back one has almost no green)
+  }
+}
+
 // A 2-pixel point centred on the pixel centre (15.5, 15.5): an even size takes the square around
 // the nearest pixel corner, and on this tie llvmpipe's snapped centre (256 * 15.5 = 3968, plus 128,
 // over 256: 16) puts it at columns 15 and 16; rows, counted down with llvmpipe's one-step shift

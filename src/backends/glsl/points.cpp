@@ -40,7 +40,12 @@ std::string point_geometry(const ProgramKey& k, const std::vector<std::string>& 
   if (k.fog) g += "in float gv_fog[];\nout float v_fog;\n";
   g += "void corner(vec2 px, float z) {\n";
   g += "  gl_Position = vec4((px - u_point_viewport.xy) / u_point_viewport.zw * 2.0 - 1.0, z, 1.0);\n";
-  for (const std::string& c : colours) g += "  " + c + " = g" + c + "[0];\n";
+  // A point has no back: its square shows the front colours whatever the strip's winding.
+  for (std::string c : colours) {
+    const std::string out = c;
+    if (const size_t at = c.find("back"); at != std::string::npos) c.replace(at, 4, "front");
+    g += "  " + out + " = g" + c + "[0];\n";
+  }
   if (k.fog) g += "  v_fog = gv_fog[0];\n";
   g += "  EmitVertex();\n}\n";
   // A point whose centre is outside the view volume is not drawn (GL 2.1 section 2.12).

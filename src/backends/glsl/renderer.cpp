@@ -200,6 +200,8 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   gl_.UseProgram(p.id);
   upload(p, s);
   apply(s);
+  // The square of a point is a strip of triangles: neither culled nor offset as polygons are.
+  if (key.points) gl_.Disable(GL_CULL_FACE), gl_.Disable(GL_POLYGON_OFFSET_FILL);
   vertices_.upload(p.format, v, count);
   if (list.indices) elements_.write(list.indices, list.count * sizeof(uint32_t));
   materials_.stream(gl_, s.vertex_materials);
