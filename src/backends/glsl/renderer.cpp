@@ -6,7 +6,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "backends/glsl/point_ties.h"
 #include "backends/glsl/raster_features.h"
 #include "raster/raster.h"
 
@@ -192,14 +191,17 @@ void Renderer::draw(const state::SinkState& s, GLenum mode, const state::SinkVer
   if (mode == GL_QUADS || mode == GL_QUAD_STRIP) rule.any_outside = any_outside(s, v, count, indices, n);
   const DrawList list = listed(mode, indices, n, count, rule, list_, edges_.flags(s));
   if (list.count == 0) return;
-  static const std::string kTie = "points centred on a rounding tie (an odd size on a pixel edge, an even one on a pixel centre) as Mesa";
-  if (mode == GL_POINTS && !unsupported_.count(kTie) && point_on_tie(s, v, count, indices, n, fb_height_)) report(kTie);
   ++stats_.draws;
-  Program& p = program_for(ProgramKey::of(s, phong_));
+  ProgramKey key = ProgramKey::of(s, phong_);
+  // Points as whole-pixel squares (points.h), except where transform feedback records the vertex stage.
+  key.points = mode == GL_POINTS && !capture_ && !(key.phong && key.lit);
+  Program& p = program_for(key);
   ++p.info.draws;
   gl_.UseProgram(p.id);
   upload(p, s);
   apply(s);
+  // The square of a point is a strip of triangles: neither culled nor offset as polygons are.
+  if (key.points) gl_.Disable(GL_CULL_FACE), gl_.Disable(GL_POLYGON_OFFSET_FILL);
   vertices_.upload(p.format, v, count);
   if (list.indices) elements_.write(list.indices, list.count * sizeof(uint32_t));
   materials_.stream(gl_, s.vertex_materials);

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "backends/glsl/shader_features.h"
+#include "backends/glsl/points.h"
 #include "backends/glsl/unfilled.h"
 
 namespace ffc::glsl {
@@ -76,7 +77,7 @@ uint64_t ProgramKey::packed() const {
          cm << 46 | uint64_t(phong) << 49 | fog_mode << 50 | uint64_t(fog_depth) << 52 |
          uint64_t((alpha_func - GL_NEVER) & 7) << 53 | uint64_t(vertex_material) << 56 |
          uint64_t(unfilled == GL_LINE ? 1 : unfilled == GL_POINT ? 2 : 0) << 57 | uint64_t(unfilled_faces & 3) << 59 |
-         uint64_t(front_cw) << 61;
+         uint64_t(front_cw) << 61 | uint64_t(points) << 62;
 }
 
 bool ProgramKey::needs_eye_position() const {
@@ -94,6 +95,7 @@ std::vector<Uniform> uniforms(const ProgramKey& k, const state::SinkState* s) {
   if (k.needs_eye_position() || (k.fog && k.fog_depth))
     u.add("u_modelview", "mat4", 16, s ? glm::value_ptr(s->modelview) : nullptr);
   feature_uniforms(k, s, u.out);
+  point_uniforms(k, s, u.out);
   if (!k.lit) return u.out;
   const glm::mat3 inv = s ? glm::mat3(s->normal_inverse) : glm::mat3(1);
   u.add("u_normal_inverse", "mat3", 9, glm::value_ptr(inv));
@@ -309,7 +311,7 @@ Sources generate(const ProgramKey& k) {
   if (k.phong && k.lit) return generate_phong(k);
   Sources s;
   const std::string q = k.flat ? "flat " : "";
-  std::string v = header(k) + unfilled_vertex_renames(k, colour_varyings(k)) + "layout(location = 0) in vec4 a_position;\n";
+  std::string v = header(k) + unfilled_vertex_renames(k, colour_varyings(k)) + point_vertex_renames(k, colour_varyings(k)) + "layout(location = 0) in vec4 a_position;\n";
   if (k.lit) v += "layout(location = 1) in vec3 a_normal;\n";
   if (k.vertex_material)
     for (int f = 0; f < (k.two_side() ? 2 : 1); ++f)
@@ -332,7 +334,7 @@ Sources generate(const ProgramKey& k) {
   for (const std::string& o : outs) fr += q + "in vec4 " + o + ";\n";
   fr += "out vec4 o_color;\nvoid main() {\n" + colour_sum(k) + feature_fragment_code(k) + "}\n";
   s.vertex = v, s.fragment = fr;
-  s.geometry = unfilled_geometry(k, colour_varyings(k));
+  s.geometry = k.points ? point_geometry(k, colour_varyings(k)) : unfilled_geometry(k, colour_varyings(k));
   s.feedback = {"gl_Position", "v_front"};
   if (k.two_side()) s.feedback.push_back("v_back");
   return s;

@@ -37,6 +37,8 @@ struct ProgramKey {
   GLenum unfilled = 0;
   unsigned unfilled_faces = 0;
   bool front_cw = false;
+  // GL_POINTS drawn as llvmpipe's squares of whole pixels by a geometry shader (points.h).
+  bool points = false;
 
   static ProgramKey of(const state::SinkState& s, bool phong = false);
   uint64_t packed() const;  // equal keys, equal numbers: the program cache's key
