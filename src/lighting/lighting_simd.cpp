@@ -7,6 +7,7 @@
 // the compiler does not fuse the separate multiplies and adds either.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "lighting/lighting_simd.cpp"
+#include "simd/targets.h"  // before Highway: the targets we compile
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 

@@ -2,6 +2,7 @@
 // file) and dispatched to the one the CPU runs.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "simd/index_range.cpp"
+#include "simd/targets.h"  // before Highway: the targets we compile
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 

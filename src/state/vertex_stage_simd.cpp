@@ -4,6 +4,7 @@
 // normals as glm's row vector times matrix and glm::length in double, no fused multiply-add.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "state/vertex_stage_simd.cpp"
+#include "simd/targets.h"  // before Highway: the targets we compile
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 

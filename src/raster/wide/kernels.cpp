@@ -2,7 +2,7 @@
 // this file), and the dispatch to the one the CPU runs.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/wide/kernels.cpp"
-#include "raster/wide/targets.h"  // before Highway: the targets we compile
+#include "simd/targets.h"  // before Highway: the targets we compile
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 

@@ -4,7 +4,7 @@
 // binned a vector of triangles at a time.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/wide/triangle_list_wide.cpp"
-#include "raster/wide/targets.h"  // before Highway: the targets we compile
+#include "simd/targets.h"  // before Highway: the targets we compile
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
