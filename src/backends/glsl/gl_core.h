@@ -57,4 +57,12 @@ struct CoreGl {
   std::vector<std::string> load(void* (*loader)(const char* name));
 };
 
+// One shader stage compiled; a failure throws std::runtime_error naming `what` with the driver's
+// log and the source. Every program of the backend (generated, stipple, pixel copy) is built with
+// these two.
+GLuint compile_shader(const CoreGl& gl, GLenum type, const std::string& src, const char* what);
+// `program` (its stages attached, transform feedback varyings named) linked; a failure throws,
+// naming `what`, with the driver's log.
+void link_program(const CoreGl& gl, GLuint program, const char* what);
+
 }  // namespace ffc::glsl

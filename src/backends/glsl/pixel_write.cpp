@@ -1,6 +1,5 @@
 #include "backends/glsl/pixel_write.h"
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,25 +28,16 @@ const char* const kFragment =
     "  gl_FragDepth = texelFetch(u_depth, p, 0).r;\n"
     "}\n";
 
-GLuint shader(const CoreGl& gl, GLenum type, const char* src) {
-  const GLuint s = gl.CreateShader(type);
-  gl.ShaderSource(s, 1, &src, nullptr);
-  gl.CompileShader(s);
-  GLint ok = 0;
-  gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) throw std::runtime_error("glsl: the pixel copy shader does not compile");
-  return s;
-}
-
 }  // namespace
 
 void PixelWriter::write(const CoreGl& gl, const uint8_t* rgba, const uint32_t* depth, int width, int height) {
   if (!program_) {
     program_ = gl.CreateProgram();
-    const GLuint vs = shader(gl, GL_VERTEX_SHADER, kVertex), fs = shader(gl, GL_FRAGMENT_SHADER, kFragment);
+    const GLuint vs = compile_shader(gl, GL_VERTEX_SHADER, kVertex, "the pixel copy shader"),
+                 fs = compile_shader(gl, GL_FRAGMENT_SHADER, kFragment, "the pixel copy shader");
     gl.AttachShader(program_, vs), gl.AttachShader(program_, fs);
-    gl.LinkProgram(program_);
-    gl.DeleteShader(vs), gl.DeleteShader(fs);
+    gl.DeleteShader(vs), gl.DeleteShader(fs);  // kept by the program until it is deleted
+    link_program(gl, program_, "the pixel copy program");
     gl.UseProgram(program_);
     gl.Uniform1i(gl.GetUniformLocation(program_, "u_color"), 1);
     gl.Uniform1i(gl.GetUniformLocation(program_, "u_depth"), 2);

@@ -4,7 +4,6 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
-#include <stdexcept>
 
 #include "backends/glsl/raster_features.h"
 #include "raster/raster.h"
@@ -12,22 +11,6 @@
 namespace ffc::glsl {
 
 namespace {
-
-GLuint compile(const CoreGl& gl, GLenum type, const std::string& src) {
-  const GLuint s = gl.CreateShader(type);
-  const char* text = src.c_str();
-  gl.ShaderSource(s, 1, &text, nullptr);
-  gl.CompileShader(s);
-  GLint ok = 0;
-  gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    gl.GetShaderInfoLog(s, sizeof log, nullptr, log);
-    gl.DeleteShader(s);
-    throw std::runtime_error(std::string("glsl: a generated shader does not compile: ") + log + "\n" + src);
-  }
-  return s;
-}
 
 // Mesa's draw module looks for vertices outside the view volume among those the draw uses.
 bool any_outside(const state::SinkState& s, const state::SinkVertex* v, size_t count, const uint32_t* idx, size_t n) {
@@ -88,28 +71,21 @@ Renderer::Program& Renderer::program_for(const ProgramKey& k) {
   p.info.key = k;
   p.info.sources = generate(k);
   p.info.uniforms = uniforms(k, nullptr);
-  const GLuint vs = compile(gl_, GL_VERTEX_SHADER, p.info.sources.vertex);
-  const GLuint fs = compile(gl_, GL_FRAGMENT_SHADER, p.info.sources.fragment);
+  const GLuint vs = compile_shader(gl_, GL_VERTEX_SHADER, p.info.sources.vertex, "a generated shader");
+  const GLuint fs = compile_shader(gl_, GL_FRAGMENT_SHADER, p.info.sources.fragment, "a generated shader");
   p.id = gl_.CreateProgram();
   gl_.AttachShader(p.id, vs);
   gl_.AttachShader(p.id, fs);
   if (!p.info.sources.geometry.empty()) {
-    const GLuint gs = compile(gl_, GL_GEOMETRY_SHADER, p.info.sources.geometry);
+    const GLuint gs = compile_shader(gl_, GL_GEOMETRY_SHADER, p.info.sources.geometry, "a generated shader");
     gl_.AttachShader(p.id, gs), gl_.DeleteShader(gs);
   }
   std::vector<const char*> names;
   for (const std::string& n : p.info.sources.feedback) names.push_back(n.c_str());
   gl_.TransformFeedbackVaryings(p.id, GLsizei(names.size()), names.data(), GL_INTERLEAVED_ATTRIBS);
-  gl_.LinkProgram(p.id);
-  gl_.DeleteShader(vs);
+  gl_.DeleteShader(vs);  // kept by the program until it is deleted
   gl_.DeleteShader(fs);
-  GLint ok = 0;
-  gl_.GetProgramiv(p.id, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    gl_.GetProgramInfoLog(p.id, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("glsl: a generated program does not link: ") + log);
-  }
+  link_program(gl_, p.id, "a generated program");
   p.format = format_of(gl_, p.id);
   for (const Uniform& u : p.info.uniforms) p.locations.push_back(gl_.GetUniformLocation(p.id, u.name.c_str()));
   p.uploaded.assign(p.info.uniforms.size(), false);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <utility>
 
 #include "backends/glsl/renderer.h"
@@ -128,18 +127,14 @@ const char* const kFragment[2] = {
     "#version 330 core\nin vec4 v_color;\nout vec4 o_color;\nvoid main() {\n  o_color = v_color;\n}\n",
     "#version 330 core\nflat in vec4 v_color;\nout vec4 o_color;\nvoid main() {\n  o_color = v_color;\n}\n"};
 
-// Both stages compiled and linked; a failure to compile shows as the link's.
+// Both stages compiled and linked.
 GLuint link(const CoreGl& gl, const char* vertex, const char* fragment) {
   const GLuint program = gl.CreateProgram();
   for (const auto& [type, src] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}) {
-    const GLuint stage = gl.CreateShader(type);
-    gl.ShaderSource(stage, 1, &src, nullptr), gl.CompileShader(stage);
+    const GLuint stage = compile_shader(gl, type, src, "the line stipple program");
     gl.AttachShader(program, stage), gl.DeleteShader(stage);
   }
-  gl.LinkProgram(program);
-  GLint ok = 0;
-  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) throw std::runtime_error("glsl: the line stipple program does not link");
+  link_program(gl, program, "the line stipple program");
   return program;
 }
 
