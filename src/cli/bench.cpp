@@ -25,6 +25,7 @@ void add_bench(CLI::App& app) {
   auto block = std::make_shared<int>(5);
   auto json = std::make_shared<bool>(false);
   auto threads = std::make_shared<int>(0);
+  auto runs = std::make_shared<int>(1);
   opts->add_to(cmd, true, false);
   refuse_option(cmd, "--backend", "bench takes --backends, a comma-separated list of backends (mesa, soft, glsl, ...)");
   cmd->add_option("--backends", *backends_list, "Comma-separated: mesa, soft, soft-double, glsl, ... (every registered backend)")
@@ -37,6 +38,11 @@ void add_bench(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threads", *threads, "Threads for soft and soft-double (0: the default, both cores)")
       ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd->add_option("--runs", *runs,
+                  "Repeat the whole measurement this many times; report each run's medians and the spread of the "
+                  "speed-up over the runs")
+      ->check(CLI::Range(1, 100))
       ->capture_default_str();
   cmd->add_flag("--json", *json, "Print {median_ms: {backend: ms}, speedup, ...}");
   cmd->callback([=] {
@@ -65,33 +71,58 @@ void add_bench(CLI::App& app) {
     // The backends take turns in blocks of frames, so that a machine that slows down for a while
     // (other load, clock changes) slows them alike and their ratio holds. The first frame of a
     // block is not timed: it brings the backend's data back into the caches the other one used.
-    std::vector<std::vector<double>> ms(names.size());
-    for (auto& m : ms) m.reserve(size_t(*frames));
-    std::vector<uint64_t> allocs(names.size(), 0);
+    // With --runs, the whole measurement is repeated: the spread of the runs' ratios is what a
+    // reader should quote, not one run's.
     image::Image picture;
-    for (int done = 0; done < *frames; done += *block)
-      for (size_t b = 0; b < backends.size(); ++b) {
-        backends[b]->resume();
-        for (int f = -1; f < std::min(*block, *frames - done); ++f) {
-          const uint64_t a0 = allocations();
-          const auto t0 = std::chrono::steady_clock::now();
-          issue();
-          backends[b]->read_into(picture);  // finishes the frame (glFinish for Mesa)
-          const auto t1 = std::chrono::steady_clock::now();
-          const uint64_t a1 = allocations();
-          if (f < 0) continue;
-          ms[b].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-          allocs[b] += a1 - a0;
-        }
-      }
+    nlohmann::json run_list = nlohmann::json::array();
+    std::vector<double> speedups;
     std::map<std::string, double> median;
+    std::vector<uint64_t> allocs(names.size(), 0);
+    for (int run = 0; run < *runs; ++run) {
+      std::vector<std::vector<double>> ms(names.size());
+      for (auto& m : ms) m.reserve(size_t(*frames));
+      std::fill(allocs.begin(), allocs.end(), 0);
+      for (int done = 0; done < *frames; done += *block)
+        for (size_t b = 0; b < backends.size(); ++b) {
+          backends[b]->resume();
+          for (int f = -1; f < std::min(*block, *frames - done); ++f) {
+            const uint64_t a0 = allocations();
+            const auto t0 = std::chrono::steady_clock::now();
+            issue();
+            backends[b]->read_into(picture);  // finishes the frame (glFinish for Mesa)
+            const auto t1 = std::chrono::steady_clock::now();
+            const uint64_t a1 = allocations();
+            if (f < 0) continue;
+            ms[b].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+            allocs[b] += a1 - a0;
+          }
+        }
+      nlohmann::json run_medians = nlohmann::json::object();
+      for (size_t b = 0; b < names.size(); ++b) {
+        std::vector<double> sorted = ms[b];
+        std::sort(sorted.begin(), sorted.end());
+        median[names[b]] = sorted[sorted.size() / 2];
+        run_medians[names[b]] = median[names[b]];
+        // the fastest and slowest frame of all runs
+        const double lo = run == 0 ? sorted.front() : std::min(sorted.front(), all[names[b]]["min_ms"].get<double>());
+        const double hi = run == 0 ? sorted.back() : std::max(sorted.back(), all[names[b]]["max_ms"].get<double>());
+        all[names[b]] = {{"min_ms", lo}, {"max_ms", hi}};
+        alloc_json[names[b]] = double(allocs[b]) / double(*frames);
+      }
+      nlohmann::json r = {{"median_ms", run_medians}};
+      if (median.count("mesa") && median.count("soft")) {
+        speedups.push_back(median["mesa"] / median["soft"]);
+        r["speedup"] = speedups.back();
+      }
+      run_list.push_back(r);
+    }
+    // With one run the medians are that run's; with several, each backend's median of the runs' medians.
     for (size_t b = 0; b < names.size(); ++b) {
-      std::vector<double> sorted = ms[b];
-      std::sort(sorted.begin(), sorted.end());
-      median[names[b]] = sorted[sorted.size() / 2];
+      std::vector<double> per_run;
+      for (const auto& r : run_list) per_run.push_back(r["median_ms"][names[b]].get<double>());
+      std::sort(per_run.begin(), per_run.end());
+      median[names[b]] = per_run[per_run.size() / 2];
       medians[names[b]] = median[names[b]];
-      all[names[b]] = {{"min_ms", sorted.front()}, {"max_ms", sorted.back()}};
-      alloc_json[names[b]] = double(allocs[b]) / double(*frames);
     }
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
@@ -103,12 +134,25 @@ void add_bench(CLI::App& app) {
                         // soft's rasterizer: the Highway target its kernels ran on (FFCOMPAT_SIMD), or the
                         // scalar loops (same pictures)
                         {"soft_kernels", kernels}};
-    if (median.count("mesa") && median.count("soft")) j["speedup"] = median["mesa"] / median["soft"];
+    if (!speedups.empty()) {
+      std::vector<double> sorted = speedups;
+      std::sort(sorted.begin(), sorted.end());
+      j["speedup"] = *runs == 1 ? speedups.front() : sorted[sorted.size() / 2];
+      if (*runs > 1) {
+        j["runs"] = run_list;
+        j["speedup_spread"] = {{"median", sorted[sorted.size() / 2]}, {"min", sorted.front()}, {"max", sorted.back()}};
+      }
+    }
     if (median.count("mesa")) add_platform(j, "mesa");
     if (*json) return print_json(j);
     std::printf("%-12s %12s %18s\n", "backend", "median ms", "allocations/frame");
     for (const auto& n : names) std::printf("%-12s %12.3f %18.1f\n", n.c_str(), median[n], alloc_json[n].get<double>());
-    if (j.contains("speedup")) std::printf("speedup (mesa / soft): %.2fx\n", j["speedup"].get<double>());
+    if (j.contains("speedup_spread"))
+      std::printf("speedup (mesa / soft) over %d runs: median %.2fx, min %.2fx, max %.2fx\n", *runs,
+                  j["speedup_spread"]["median"].get<double>(), j["speedup_spread"]["min"].get<double>(),
+                  j["speedup_spread"]["max"].get<double>());
+    else if (j.contains("speedup"))
+      std::printf("speedup (mesa / soft): %.2fx\n", j["speedup"].get<double>());
     std::printf("%d frames each in blocks of %d, %dx%d; peak RSS %.0f MB; soft's kernels: %s\n", *frames, *block, d.width,
                 d.height, ru.ru_maxrss / 1024.0, kernels.c_str());
   });

@@ -6,6 +6,11 @@
 // framebuffer's edges.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "raster/wide/kernels.h"
 #include "triangles.h"
 
 namespace ffc {
@@ -84,4 +89,40 @@ INSTANTIATE_TEST_SUITE_P(DepthFunctions, BoxKernel,
                          func_name);
 
 }  // namespace
+// Depth is llvmpipe's fused multiply-add. Targets without the instruction (SSE4, SSSE3) work in
+// double: exact products, one rounding of the sum, a second to float that is right unless the
+// double is exactly halfway between two floats. Those cases, built here, must still give std::fma's
+// bits, as must random ones (depth-like values and wide exponents).
+TEST(FusedMulAdd, EveryTargetRoundsOnceAsStdFma) {
+  std::vector<float> a, b, c;
+  // (1 + 2^-12)^2 = 1 + 2^-11 + 2^-24: halfway between two floats. A tiny c decides the rounding
+  // (up for c > 0, down for c < 0) but vanishes in double, whose tie would round to even (down).
+  for (float tiny : {0x1p-60f, -0x1p-60f, 0x1p-40f, 0.0f}) {
+    a.push_back(1.0f + 0x1p-12f), b.push_back(1.0f + 0x1p-12f), c.push_back(tiny);
+    a.push_back(-(1.0f + 0x1p-12f)), b.push_back(1.0f + 0x1p-12f), c.push_back(tiny);
+  }
+  a.push_back(0x1p-70f), b.push_back(0x1p-60f), c.push_back(0x1p-149f);  // float's subnormals
+  a.push_back(3e38f), b.push_back(2.0f), c.push_back(-3e38f);              // beyond float's range in between
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  std::uniform_int_distribution<int> exponent(-30, 30);
+  for (int i = 0; i < 20000; ++i) {
+    a.push_back(std::ldexp(unit(rng), exponent(rng))), b.push_back(std::ldexp(unit(rng), exponent(rng)));
+    c.push_back(i % 2 ? unit(rng) : std::ldexp(unit(rng), exponent(rng)));
+  }
+  std::vector<float> want(a.size()), got(a.size());
+  for (size_t i = 0; i < a.size(); ++i) want[i] = std::fma(a[i], b[i], c[i]);
+  ASSERT_NE(want[0], float(double(a[0]) * double(b[0]) + double(c[0])))
+      << "the first case no longer needs the halfway check: pick another";
+  std::vector<std::string> targets = vector_targets();
+  if (targets.empty()) GTEST_SKIP() << "no vector target: Highway's portable one only";
+  for (const std::string& target : targets) {
+    const OnTarget on(target);
+    raster::detail::fused_mul_add_wide(a.data(), b.data(), c.data(), got.data(), a.size());
+    for (size_t i = 0; i < a.size(); ++i)
+      ASSERT_EQ(std::memcmp(&want[i], &got[i], 4), 0)
+          << target << ": fma(" << a[i] << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << got[i];
+  }
+}
+
 }  // namespace ffc

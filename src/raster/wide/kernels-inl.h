@@ -33,20 +33,50 @@ HWY_INLINE hn::Vec<DI> LanesFrom(DI di, int32_t first) {
 constexpr size_t kMaxLanes32 = HWY_MAX_BYTES / 4;
 
 // a * b + c rounded once, as depth_at's std::fma: one instruction where the target has it (AVX2
-// and AVX-512, where Highway's MulAdd is fused; NEON and SVE on AArch64), lane by lane elsewhere
-// (SSE4: MulAdd there is a product and a sum, two roundings).
+// and AVX-512, where Highway's MulAdd is fused; NEON and SVE on AArch64), in double on SSE4 and
+// SSSE3 (MulAdd there is a product and a sum, two roundings), lane by lane elsewhere.
+template <class DF, class V>
+HWY_INLINE V FusedMulAddLanes(DF df, V a, V b, V c) {
+  alignas(64) float x[kMaxLanes32], y[kMaxLanes32], z[kMaxLanes32];
+  hn::Store(a, df, x), hn::Store(b, df, y), hn::Store(c, df, z);
+  for (size_t k = 0; k < hn::Lanes(df); ++k) x[k] = std::fma(x[k], y[k], z[k]);
+  return hn::Load(df, x);
+}
 #if (HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2) || (HWY_ARCH_ARM_A64 && HWY_TARGET != HWY_EMU128 && HWY_TARGET != HWY_SCALAR)
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF, V a, V b, V c) {
   return hn::MulAdd(a, b, c);
 }
+#elif HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128 && HWY_HAVE_FLOAT64
+// Without a fused instruction (SSE4, SSSE3): in double. a * b is exact there (24 + 24 bits of
+// significand fit in 53), so a * b + c in double is rounded once, and rounding that to float gives
+// the fused result unless the double landed exactly halfway between two floats (then the first
+// rounding may have decided the tie: those vectors, rare, go lane by lane through std::fma), or in
+// float's subnormal range (its halfway points lie elsewhere: the same). A call to fmaf per lane
+// made the cube four times slower than on AVX2.
+template <class DF, class V>
+HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
+  const hn::Half<DF> dh;
+  const hn::Rebind<double, decltype(dh)> dd;
+  const hn::RebindToUnsigned<decltype(dd)> du64;
+  auto half = [&](auto x, auto y, auto z, auto& odd) {
+    const auto s = hn::Add(hn::Mul(hn::PromoteTo(dd, x), hn::PromoteTo(dd, y)), hn::PromoteTo(dd, z));
+    // halfway: the 29 bits below float's last significand bit are 1000...0
+    const auto tail = hn::And(hn::BitCast(du64, s), hn::Set(du64, (uint64_t(1) << 29) - 1));
+    const auto small = hn::And(hn::Lt(hn::Abs(s), hn::Set(dd, 0x1p-125)), hn::Ne(s, hn::Zero(dd)));
+    odd = odd || !hn::AllFalse(dd, hn::Or(hn::RebindMask(dd, hn::Eq(tail, hn::Set(du64, uint64_t(1) << 28))), small));
+    return hn::DemoteTo(dh, s);
+  };
+  bool odd = false;
+  const auto lo = half(hn::LowerHalf(dh, a), hn::LowerHalf(dh, b), hn::LowerHalf(dh, c), odd);
+  const auto hi = half(hn::UpperHalf(dh, a), hn::UpperHalf(dh, b), hn::UpperHalf(dh, c), odd);
+  if (HWY_LIKELY(!odd)) return hn::Combine(df, hi, lo);
+  return FusedMulAddLanes(df, a, b, c);
+}
 #else
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
-  alignas(64) float x[kMaxLanes32], y[kMaxLanes32], z[kMaxLanes32];
-  hn::Store(a, df, x), hn::Store(b, df, y), hn::Store(c, df, z);
-  for (size_t k = 0; k < hn::Lanes(df); ++k) x[k] = std::fma(x[k], y[k], z[k]);
-  return hn::Load(df, x);
+  return FusedMulAddLanes(df, a, b, c);
 }
 #endif
 
@@ -193,7 +223,10 @@ HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, V fy, V y_down, hn
     rgba = hn::Or(rgba, hn::ShiftLeftSame(q, 8 * k));
   }
   store(1, hn::IfThenElse(hn::RebindMask(du, pass), rgba, load(1)));
-  return hn::CountTrue(di, pass) - hn::CountTrue(df, finite);
+  // The drawn lanes whose colour was not finite: nearly always none, so counted only when there
+  // are some (SSSE3 has no popcount instruction: a library call per vector otherwise).
+  const auto nonfinite = hn::AndNot(hn::RebindMask(di, finite), pass);
+  return hn::AllFalse(di, nonfinite) ? 0 : hn::CountTrue(di, nonfinite);
 }
 
 // Pixels x + k of row y for the lanes k set in `lanes` (all within the framebuffer).

@@ -6,6 +6,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cstddef>
 
 #include "raster/wide/kernels-inl.h"
@@ -23,6 +24,19 @@ uint64_t RasterizeWide(DepthMode mode, Framebuffer& fb, Triangle& t, GLenum func
   return 0;
 }
 
+// Depth's fused multiply-add on this target, a vector at a time (its own test: kernels_test).
+void FusedMulAddArrays(const float* a, const float* b, const float* c, float* out, size_t n) {
+  const hn::ScalableTag<float> df;
+  const size_t lanes = hn::Lanes(df);
+  alignas(64) float x[kMaxLanes32], y[kMaxLanes32], z[kMaxLanes32];
+  for (size_t i = 0; i < n; i += lanes) {
+    const size_t m = std::min(lanes, n - i);
+    for (size_t k = 0; k < lanes; ++k) x[k] = k < m ? a[i + k] : 0, y[k] = k < m ? b[i + k] : 0, z[k] = k < m ? c[i + k] : 0;
+    hn::Store(FusedMulAdd(df, hn::Load(df, x), hn::Load(df, y), hn::Load(df, z)), df, x);
+    for (size_t k = 0; k < m; ++k) out[i + k] = x[k];
+  }
+}
+
 }  // namespace ffc::raster::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -30,6 +44,11 @@ HWY_AFTER_NAMESPACE();
 namespace ffc::raster::detail {
 
 HWY_EXPORT(RasterizeWide);
+HWY_EXPORT(FusedMulAddArrays);
+
+void fused_mul_add_wide(const float* a, const float* b, const float* c, float* out, size_t n) {
+  HWY_DYNAMIC_DISPATCH(FusedMulAddArrays)(a, b, c, out, n);
+}
 
 bool g_kernels_allowed = true;
 

@@ -15,6 +15,7 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <cstddef>
 #include <cstdint>
 
 #include "raster/raster.h"
@@ -67,5 +68,9 @@ struct PlanesRef {
 // The row loop's rasterize() on the dispatched target: the rows of t (edges set up, box within the
 // framebuffer) in this thread's bands. Returns the drawn pixels whose colour was not finite.
 uint64_t rasterize_wide(DepthMode mode, Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, PlanesRef planes);
+
+// out[i] = a[i] * b[i] + c[i] rounded once, by the dispatched target's vector code for depth (one
+// instruction, or in double with a check for halfway cases): for tests against std::fma.
+void fused_mul_add_wide(const float* a, const float* b, const float* c, float* out, size_t n);
 
 }  // namespace ffc::raster::detail
