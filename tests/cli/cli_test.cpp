@@ -1,4 +1,5 @@
 // The ffcompat command line as a script sees it: --json output and exit codes.
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -252,6 +253,28 @@ TEST(Cli, BenchReportsMediansTheRatioAndNoAllocationPerFrame) {
   EXPECT_EQ(js["soft_kernels"], "scalar");
   EXPECT_EQ(js["threads"], 1);
   EXPECT_NE(ffcompat("bench --scene cube --frames 2 --threads -1").status, 0);
+}
+
+// --runs repeats the measurement: each run's medians and speed-up, the median speed-up of the runs
+// and its spread, the medians the median of the runs' medians.
+TEST(Cli, BenchRunsReportEachRunAndTheSpread) {
+  const Result r = ffcompat("bench --scene cube --frames 3 --block 3 --runs 3 --backends mesa,soft --json");
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["runs"].size(), 3u);
+  std::vector<double> ratios, soft;
+  for (const auto& run : j["runs"]) {
+    ratios.push_back(run["speedup"].get<double>());
+    soft.push_back(run["median_ms"]["soft"].get<double>());
+    EXPECT_DOUBLE_EQ(run["speedup"].get<double>(), run["median_ms"]["mesa"].get<double>() / run["median_ms"]["soft"].get<double>());
+  }
+  std::sort(ratios.begin(), ratios.end()), std::sort(soft.begin(), soft.end());
+  EXPECT_DOUBLE_EQ(j["speedup_spread"]["min"].get<double>(), ratios[0]);
+  EXPECT_DOUBLE_EQ(j["speedup_spread"]["median"].get<double>(), ratios[1]);
+  EXPECT_DOUBLE_EQ(j["speedup_spread"]["max"].get<double>(), ratios[2]);
+  EXPECT_DOUBLE_EQ(j["speedup"].get<double>(), ratios[1]);
+  EXPECT_DOUBLE_EQ(j["median_ms"]["soft"].get<double>(), soft[1]);
+  EXPECT_NE(ffcompat("bench --scene cube --frames 2 --runs 0").status, 0);
 }
 
 #ifdef FFCOMPAT_WITH_GLSL
