@@ -428,9 +428,8 @@ class Context {
   glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
-  bool color_copied_in_format_ = false;    // the format's colour copied to the state since its reset
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
-  bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
+  bool vertices_kept_ = false;  // Mesa's NeedFlush asks for a flush of stored vertices (after glBegin, or a FLUSH_CURRENT)
   bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
   // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
@@ -442,7 +441,7 @@ class Context {
   CurrentValues current_values() const { return {normal_, color_, texcoord_}; }
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
     normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
-    color_size_ = color_active_ = 0, normal_in_format_ = false, color_copied_in_format_ = false;
+    color_size_ = color_active_ = 0, normal_in_format_ = false;
   }
   struct PendingMaterial {
     glm::dvec4* dst;
