@@ -165,6 +165,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56
+      drawn("clipped-sliver-planes", state::kClippedSliver),  // row 63
   };
   return v;
 }

@@ -56,6 +56,10 @@ inline constexpr const char* kZeroClipVertex =
 inline constexpr const char* kUnfilledClipped =
     "glPolygonMode GL_LINE or GL_POINT on a triangle the view volume clips: Mesa clips the triangle and draws the "
     "pieces of its edges that remain, zero-length ones too; soft clips each edge as a line";
+inline constexpr const char* kClippedSliver =
+    "a smooth triangle of a clipped polygon's fan with corners collinear up to float rounding that still covers "
+    "pixels: its colour planes are rounding noise, llvmpipe's (float) and soft's (double) leave the vertices' "
+    "range differently";
 inline constexpr const char* kDrawPixelsFormat =
     "glDrawPixels with a format or type soft does not implement (depth, stencil, colour index, the integer and "
     "packed types): GL_INVALID_OPERATION and nothing drawn, where Mesa draws";
