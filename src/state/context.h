@@ -335,6 +335,7 @@ class Context {
   void flush_current();
   void flush_stored();
   void flush_stored_keeping_format();
+  void flush_vertices();  // Mesa's FLUSH_VERTICES: a flush of stored vertices when one is asked for
   void stray_vertex();
   void begin_draw();
   void feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const;

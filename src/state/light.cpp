@@ -189,7 +189,7 @@ void Context::ColorMaterial(GLenum face, GLenum mode) {
   // the mode being replaced, and the format emptied; the new mode then tracks the colour again.
   // The first colour since the format's reset goes to the new mode only (measured:
   // tests/state/color_material_test.cpp, ColorMaterialMeasured).
-  if (vertices_kept_) vertices_kept_ = false, flush_stored();
+  flush_vertices();
   cm_face_ = face, cm_mode_ = mode;
   model_.cm_faces = face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3;
   model_.cm_mode = mode;

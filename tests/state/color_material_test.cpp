@@ -87,6 +87,14 @@ void run_step(const Step& s, int index) {
       for (int k = 0; k < 4; ++k) observe(at + "[" + std::to_string(k) + "]", v[k]);
       break;
     }
+    case 'q': {  // FLUSH_CURRENT without FLUSH_VERTICES
+      GLfloat v[4];
+      glGetFloatv(GL_CURRENT_COLOR, v);
+      for (int k = 0; k < 4; ++k) observe(at + "[" + std::to_string(k) + "]", v[k]);
+      break;
+    }
+    case 'h': glShadeModel(s.a == 0 ? GL_FLAT : GL_SMOOTH); break;  // FLUSH_VERTICES when it changes
+    case 'n': glNormal3fv(kNormals + 3 * s.a); break;                // joins the vbo format
   }
 }
 
@@ -150,6 +158,27 @@ std::vector<Case> measured_streams() {
                    {'M', 0, 2, 0}, {'g', 0, 0, 3}, {'d', 0, 0, 0}}),
   };
 }
+// The flush rule (Context::flush_current) over streams that also query the current colour
+// (FLUSH_CURRENT alone), change the shade model (a FLUSH_VERTICES when it changes) and send normals
+// (another attribute in the vbo format, copied at the same flushes).
+std::vector<Case> flush_streams() {
+  std::vector<Case> rows;
+  std::mt19937 rng(20261125);
+  const std::string ops = "ccmmMMeexdiqqhhng";
+  for (int n = 0; n < 300; ++n) {
+    std::vector<Step> steps;
+    const int length = 3 + int(rng() % 10);
+    for (int k = 0; k < length; ++k)
+      steps.push_back({ops[rng() % ops.size()], int(rng() % 3), int(rng() % 3), int(rng() % 5)});
+    steps.push_back({'d', 0, 0, 0});
+    rows.push_back(stream_case("Flush" + std::to_string(n) + "_", steps));
+  }
+  return rows;
+}
+class ColorMaterialFlushStreams : public ::testing::TestWithParam<Case> {};
+TEST_P(ColorMaterialFlushStreams, MatchesMesa) { check_case(GetParam(), 2e-6); }
+INSTANTIATE_TEST_SUITE_P(Generated, ColorMaterialFlushStreams, ::testing::ValuesIn(flush_streams()), case_name);
+
 class ColorMaterialMeasured : public ::testing::TestWithParam<Case> {};
 TEST_P(ColorMaterialMeasured, MatchesMesa) { check_case(GetParam(), 2e-6); }
 INSTANTIATE_TEST_SUITE_P(Sequences, ColorMaterialMeasured, ::testing::ValuesIn(measured_streams()), case_name);
