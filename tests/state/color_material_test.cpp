@@ -109,20 +109,23 @@ Case stream_case(const std::string& prefix, const std::vector<Step>& steps) {
           }, OK};
 }
 
-std::vector<Case> generated_streams() {
+// `count` streams of 3 to 12 steps drawn from `ops` (a letter twice is twice as likely), each
+// ending with a draw.
+std::vector<Case> random_streams(const std::string& prefix, uint32_t seed, const std::string& ops, int count) {
   std::vector<Case> rows;
-  std::mt19937 rng(20261124);
-  const std::string ops = "ccmmmMMeexddiargg";
-  for (int n = 0; n < 400; ++n) {
+  std::mt19937 rng(seed);
+  for (int n = 0; n < count; ++n) {
     std::vector<Step> steps;
     const int length = 3 + int(rng() % 10);
     for (int k = 0; k < length; ++k)
       steps.push_back({ops[rng() % ops.size()], int(rng() % 3), int(rng() % 3), int(rng() % 5)});
     steps.push_back({'d', 0, 0, 0});
-    rows.push_back(stream_case("Stream" + std::to_string(n) + "_", steps));
+    rows.push_back(stream_case(prefix + std::to_string(n) + "_", steps));
   }
   return rows;
 }
+
+std::vector<Case> generated_streams() { return random_streams("Stream", 20261124, "ccmmmMMeexddiargg", 400); }
 
 // All 400 agree. Stream 397 (m211 m004 g023 K021 m124 e112 K224 m014 d000) disagreed until soft
 // modelled Mesa's NeedFlush after a FLUSH_CURRENT (Context::flush_current): the glGetMaterialfv
@@ -161,20 +164,7 @@ std::vector<Case> measured_streams() {
 // The flush rule (Context::flush_current) over streams that also query the current colour
 // (FLUSH_CURRENT alone), change the shade model (a FLUSH_VERTICES when it changes) and send normals
 // (another attribute in the vbo format, copied at the same flushes).
-std::vector<Case> flush_streams() {
-  std::vector<Case> rows;
-  std::mt19937 rng(20261125);
-  const std::string ops = "ccmmMMeexdiqqhhng";
-  for (int n = 0; n < 300; ++n) {
-    std::vector<Step> steps;
-    const int length = 3 + int(rng() % 10);
-    for (int k = 0; k < length; ++k)
-      steps.push_back({ops[rng() % ops.size()], int(rng() % 3), int(rng() % 3), int(rng() % 5)});
-    steps.push_back({'d', 0, 0, 0});
-    rows.push_back(stream_case("Flush" + std::to_string(n) + "_", steps));
-  }
-  return rows;
-}
+std::vector<Case> flush_streams() { return random_streams("Flush", 20261125, "ccmmMMeexdiqqhhng", 300); }
 class ColorMaterialFlushStreams : public ::testing::TestWithParam<Case> {};
 TEST_P(ColorMaterialFlushStreams, MatchesMesa) { check_case(GetParam(), 2e-6); }
 INSTANTIATE_TEST_SUITE_P(Generated, ColorMaterialFlushStreams, ::testing::ValuesIn(flush_streams()), case_name);
