@@ -45,12 +45,14 @@ bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& me
 }
 
 // A deviation soft reported while drawing, which can only change what was drawn.
-// A deviation soft names when it draws: it explains what drawing shows (pictures, feedback and
-// the count glRenderMode returns) in a stream where soft named it.
+// A deviation soft names when it draws: it explains what drawing shows (pictures, feedback, the
+// selection buffer's hit records and the count glRenderMode returns) in a stream where soft named it.
 KnownDeviation drawn(std::string name, const char* soft_says) {
   return {std::move(name), soft_says, [soft_says](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+            auto call_is = [&](const char* f) { return m.call >= 0 && name_of(s[size_t(m.call)]) == f; };
             const bool drawing = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels" ||
-                                 (m.kind == "return" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glRenderMode");
+                                 (m.kind == "return" && call_is("glRenderMode")) ||
+                                 (m.kind == "output" && call_is("glSelectBuffer"));
             return drawing && std::find(soft.deviations.begin(), soft.deviations.end(), soft_says) != soft.deviations.end();
           }};
 }
@@ -165,6 +167,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56
+      drawn("clipped-sliver-planes", state::kClippedSliver),  // row 63
   };
   return v;
 }

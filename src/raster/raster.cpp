@@ -210,6 +210,24 @@ WindowVertex map_to_window(const glm::dvec4& clip, const State& s) {
   return w;
 }
 
+bool sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {
+  const float x0 = float(a.pos.x), y0 = float(a.pos.y);
+  const float dx01 = x0 - float(b.pos.x), dy01 = y0 - float(b.pos.y);
+  const float dx20 = float(c.pos.x) - x0, dy20 = float(c.pos.y) - y0;
+  const float dx12 = float(c.pos.x) - float(b.pos.x), dy12 = float(c.pos.y) - float(b.pos.y);
+  const float det = dx01 * dy20 - dy01 * dx20;
+  const float longest = std::max({dx01 * dx01 + dy01 * dy01, dx20 * dx20 + dy20 * dy20, dx12 * dx12 + dy12 * dy12});
+  return std::fabs(det) < 1e-4f * longest;
+}
+
+namespace {
+std::atomic<uint64_t> g_clipped_slivers{0};
+}
+void count_if_sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const State& s) {
+  if (!s.flat && sliver(a, b, c)) g_clipped_slivers.fetch_add(1, std::memory_order_relaxed);
+}
+uint64_t clipped_slivers() { return g_clipped_slivers.load(std::memory_order_relaxed); }
+
 bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s) {
   // The sign of the homogeneous determinant is the window orientation whatever the w's signs.
   const double area = a.x * (b.y * c.w - c.y * b.w) - b.x * (a.y * c.w - c.y * a.w) + c.x * (a.y * b.w - b.y * a.w);

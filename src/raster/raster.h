@@ -177,6 +177,17 @@ struct ClipTemps {
   bool read_unwritten = false;
 };
 using WindowPolygon = Fixed<WindowVertex, 10>;
+// A triangle of a clipped polygon's fan whose corners are collinear up to float rounding: its
+// determinant in float (llvmpipe's setup arithmetic) below 1e-4 of its longest edge squared. Its
+// snapped edges may still cover pixels, where an attribute plane through it is rounding noise:
+// llvmpipe's planes (float, from 1 / area) and soft's (double, kept in float) disagree there, each
+// leaving the vertices' range of colours (docs/deviations.md, row 63).
+bool sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c);
+// Counts the smooth slivers set up for drawing (any context of the process, as nonfinite_fragments):
+// the triangle-list path draws clipped triangles on the worker threads, and its caller names the
+// deviation when the count moved during its draw.
+void count_if_sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const State& s);
+uint64_t clipped_slivers();
 WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,
                            bool* back_facing = nullptr, ClipTemps* feedback = nullptr);
 

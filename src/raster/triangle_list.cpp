@@ -120,6 +120,7 @@ void draw_clipped(const List& l, const std::array<size_t, 3>& vi, const detail::
   for (size_t k = 1; k + 1 < w.size(); ++k) {
     Triangle t;
     if (!setup(w[k], w[k + 1], w[0], l.s, t)) continue;  // Mesa's clipper's fan (context.cpp)
+    count_if_sliver(w[k], w[k + 1], w[0], l.s);          // docs/deviations.md row 63
     t.xmin = std::max(t.xmin, 0), t.ymin = std::max(t.ymin, 0);
     t.xmax = std::min(t.xmax, l.fb.width - 1), t.ymax = std::min(t.ymax, l.fb.height - 1);
     if (t.xmin <= t.xmax && t.ymin <= t.ymax)

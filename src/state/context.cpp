@@ -37,8 +37,12 @@ bool Context::outside_begin_end() {
   if (in_begin_) error(GL_INVALID_OPERATION);
   // Nearly every call that checks this is one where Mesa flushes the vertices it keeps after
   // glEnd (FLUSH_VERTICES), emptying the pending current values (see update_color_material).
-  else if (vertices_kept_) vertices_kept_ = false, flush_stored();
+  else flush_vertices();
   return !in_begin_;
+}
+
+void Context::flush_vertices() {
+  if (vertices_kept_) vertices_kept_ = false, flush_stored();
 }
 
 // Queries (glGet*, glIsEnabled, glGetLight, glGetPointerv, glGetString) and client state (the array

@@ -56,6 +56,10 @@ inline constexpr const char* kZeroClipVertex =
 inline constexpr const char* kUnfilledClipped =
     "glPolygonMode GL_LINE or GL_POINT on a triangle the view volume clips: Mesa clips the triangle and draws the "
     "pieces of its edges that remain, zero-length ones too; soft clips each edge as a line";
+inline constexpr const char* kClippedSliver =
+    "a smooth triangle of a clipped polygon's fan with corners collinear up to float rounding that still covers "
+    "pixels: its colour planes are rounding noise, llvmpipe's (float) and soft's (double) leave the vertices' "
+    "range differently";
 inline constexpr const char* kDrawPixelsFormat =
     "glDrawPixels with a format or type soft does not implement (depth, stencil, colour index, the integer and "
     "packed types): GL_INVALID_OPERATION and nothing drawn, where Mesa draws";
@@ -331,6 +335,7 @@ class Context {
   void flush_current();
   void flush_stored();
   void flush_stored_keeping_format();
+  void flush_vertices();  // Mesa's FLUSH_VERTICES: a flush of stored vertices when one is asked for
   void stray_vertex();
   void begin_draw();
   void feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const;
@@ -428,9 +433,8 @@ class Context {
   glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
-  bool color_copied_in_format_ = false;    // the format's colour copied to the state since its reset
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
-  bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
+  bool vertices_kept_ = false;  // Mesa's NeedFlush asks for a flush of stored vertices (after glBegin, or a FLUSH_CURRENT)
   bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
   // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
@@ -442,7 +446,7 @@ class Context {
   CurrentValues current_values() const { return {normal_, color_, texcoord_}; }
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
     normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
-    color_size_ = color_active_ = 0, normal_in_format_ = false, color_copied_in_format_ = false;
+    color_size_ = color_active_ = 0, normal_in_format_ = false;
   }
   struct PendingMaterial {
     glm::dvec4* dst;

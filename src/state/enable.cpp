@@ -64,20 +64,24 @@ const OtherEnable* find_enable(const OtherEnable (&table)[N], GLenum name) {
 }
 }  // namespace
 
+// Mesa's _mesa_set_enable returns before its FLUSH_VERTICES when the capability already has the
+// value asked for (and raises GL_INVALID_ENUM without one): a glEnable that changes nothing leaves
+// the vbo format and its pending values alone (measured: ColorMaterialFlushStreams, Flush267).
 void Context::set_enabled(GLenum cap, bool on) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   // Mesa's glEnable / glDisable also take the client arrays, as glEnableClientState does (GL 2.1:
   // GL_INVALID_ENUM).
   if (cap == GL_VERTEX_ARRAY || cap == GL_NORMAL_ARRAY || cap == GL_COLOR_ARRAY || find_enable(kOtherArrays, cap))
-    return set_client_state(cap, on);
+    return flush_vertices(), set_client_state(cap, on);
   bool* c = capability(cap);
   if (!c) {
-    if (find_enable(kOtherCaps, cap)) other_enables_[cap] = on;  // accepted, recorded, not modelled
-    else error(GL_INVALID_ENUM);
+    if (!find_enable(kOtherCaps, cap)) return error(GL_INVALID_ENUM);
+    if (enabled_state(cap) != int(on)) flush_vertices(), other_enables_[cap] = on;  // recorded, not modelled
     return;
   }
+  if (*c == on) return;
+  flush_vertices();
   if (cap == GL_COLOR_MATERIAL) {
-    if (*c == on) return;
     flush_current();  // Mesa's enable.c: pending values first, then the tracking
     *c = on;
     constants_dirty_ = true;

@@ -178,16 +178,18 @@ void Context::Materialf(GLenum face, GLenum pname, GLfloat param) {
 void Context::Materiali(GLenum face, GLenum pname, GLint param) { Materialf(face, pname, GLfloat(param)); }
 
 void Context::ColorMaterial(GLenum face, GLenum mode) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (!valid_face(face)) return error(GL_INVALID_ENUM);
   if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
       mode != GL_AMBIENT_AND_DIFFUSE)
     return error(GL_INVALID_ENUM);
   if (face == cm_face_ && mode == cm_mode_) return;  // as Mesa: no flush, no tracking
-  // A colour set again after the one in the vbo format was copied is tracked with the mode being
-  // replaced first, then with the new one; the first colour since the format's reset only with the
-  // new one (measured: tests/state/color_material_test.cpp, ColorMaterialMeasured).
-  if (color_material_ && color_copied_in_format_) flush_current();
+  // Mesa's FLUSH_VERTICES comes after the test above. When an earlier FLUSH_CURRENT left it asking
+  // for a flush of stored vertices (flush_current), a colour set since is copied and tracked with
+  // the mode being replaced, and the format emptied; the new mode then tracks the colour again.
+  // The first colour since the format's reset goes to the new mode only (measured:
+  // tests/state/color_material_test.cpp, ColorMaterialMeasured).
+  flush_vertices();
   cm_face_ = face, cm_mode_ = mode;
   model_.cm_faces = face == GL_FRONT ? 1 : face == GL_BACK ? 2 : 3;
   model_.cm_mode = mode;
@@ -235,14 +237,23 @@ void Context::update_color_material() {
 void Context::copy_pending() {
   const bool color_changed = color_ != flushed_color_;
   flushed_color_ = color_;
-  color_copied_in_format_ = color_size_ > 0;
   for (const PendingMaterial& p : pending_materials_)
     if (*p.dst != p.value) *p.dst = p.value, constants_dirty_ = true;
   if (color_changed) update_color_material();
 }
 
+// Mesa's FLUSH_CURRENT copies the values set since the last flush and keeps them in its vbo format;
+// it then leaves NeedFlush set to ~FLUSH_UPDATE_CURRENT (vbo_exec_FlushVertices_internal), which asks
+// for a flush of stored vertices. So the next call that flushes stored vertices (FLUSH_VERTICES:
+// nearly every state change, outside_begin_end) copies the format's values again, glMaterial ones
+// included, and empties the format, even where no vertex was stored. This explains colour-material
+// stream 397 (a glMaterial before glEnable(GL_COLOR_MATERIAL) is copied once more at the next
+// glColorMaterial, then tracked over, and never copied again) and why a colour copied by a glGet
+// or glGetMaterialfv is tracked with the mode a glColorMaterial replaces.
 void Context::flush_current() {
-  if (!spec_) copy_pending();
+  if (spec_) return;
+  if (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()) vertices_kept_ = true;
+  copy_pending();
 }
 
 void Context::flush_stored() {
@@ -250,7 +261,6 @@ void Context::flush_stored() {
   copy_pending();
   pending_materials_.clear();
   color_size_ = color_active_ = 0, normal_in_format_ = false;  // the vbo's vertex format is reset
-  color_copied_in_format_ = false;
   format_has_position_ = false;
 }
 void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
@@ -275,8 +285,8 @@ void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
 }
 
 void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
-  if (!outside_begin_end()) return;
-  flush_stored();  // Mesa: copied and emptied (measured: a glMaterial before it no longer overrides tracking)
+  if (!outside_begin_end()) return;  // FLUSH_VERTICES
+  flush_current();  // then FLUSH_CURRENT: copied, kept in the format until the next flush of stored vertices
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
   const lighting::MaterialParams& m = materials_[face == GL_BACK];
   glm::dvec4 v;

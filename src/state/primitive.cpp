@@ -170,7 +170,10 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
   if (feedback_) return c_.feedback_primitive(GL_POLYGON_TOKEN, w.begin(), w.size(), true, rs_, offset_stage_);
   raster::Triangle t;
   for (size_t k = 1; k + 1 < w.size(); ++k)
-    if (raster::setup(w[k], w[k + 1], w[0], rs_, t)) out.push_back(t);
+    if (raster::setup(w[k], w[k + 1], w[0], rs_, t)) {
+      out.push_back(t);
+      if (!rs_.flat && raster::sliver(w[k], w[k + 1], w[0])) c_.deviations_.insert(kClippedSliver);  // row 63
+    }
 }
 
 // A line or a point, clipped (a point as a degenerate line) and drawn at once, or fed back.
