@@ -68,17 +68,27 @@ struct StageOut {
   const lighting::Lit<T>& lit_at(int j) const { return lit[j]; }
 };
 // The float stage lights columns (lighting_simd.h): its colours stay in columns, padded.
+// The kernel writes only the columns the key makes (SoaOut::keyed): `view` reads the back colours
+// from the front columns without two-sided lighting, and the secondary ones from a column of
+// zeros without a separate specular colour.
 template <int N>
 struct StageOut<float, N> {
   glm::vec4 clip[N];
   double fog[N];
   glm::dvec4 unlit[N];
   alignas(64) float lit[16][lighting::kSoaPad];  // [primary front, back, secondary front, back][r, g, b, a]
-  glm::vec4 colour(int which, int j) const { return {lit[4 * which][j], lit[4 * which + 1][j], lit[4 * which + 2][j], lit[4 * which + 3][j]}; }
+  const float* view[16];
+  alignas(64) static constexpr float kZeros[lighting::kSoaPad] = {};
+  glm::vec4 colour(int which, int j) const { return {view[4 * which][j], view[4 * which + 1][j], view[4 * which + 2][j], view[4 * which + 3][j]}; }
   lighting::Lit<float> lit_at(int j) const { return {{colour(0, j), colour(1, j)}, {colour(2, j), colour(3, j)}}; }
-  lighting::SoaOut columns() {
+  lighting::SoaOut columns(const lighting::Key& key) {
     lighting::SoaOut o;
     for (int k = 0; k < 16; ++k) o.col[k >> 3][k >> 2 & 1][k & 3] = lit[k];
+    o.keyed = true;
+    for (int k = 0; k < 16; ++k) {
+      const bool back = k >> 2 & 1, secondary = k >> 3;
+      view[k] = secondary && !key.separate_specular() ? kZeros : lit[back && !key.two_side() ? k & ~4 : k];
+    }
     return o;
   }
 };
@@ -186,20 +196,20 @@ class VertexStage {
     float* const eye_cols[4] = {eye[0], eye[1], eye[2], eye[3]};
     const float* const obj_cols[4] = {obj[0], obj[1], obj[2], obj[3]};
     const glm::mat4 to_eye = c_.modelview_f_.back().values();
-    transform_columns(c_.mvp_f_, need_eye ? &to_eye : nullptr, obj_cols, size_t(m), clip, eye_cols);
+    // GL 2.1 lights the vertex at (x/w, y/w, z/w); Mesa takes x, y, z as they are (see run_rows()):
+    // outside spec mode the eye w column is 1 (the fog reads only z).
+    transform_columns(c_.mvp_f_, need_eye ? &to_eye : nullptr, obj_cols, size_t(m), clip, eye_cols, lit && !c_.spec_);
     // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
     // GL_FRAGMENT_DEPTH; see run_rows().
     if (fog_depth_)
       for (int j = 0; j < m; ++j) out.fog[j] = std::abs(double(eye[2][j]));
     if (!lit) return;
-    // GL 2.1 lights the vertex at (x/w, y/w, z/w); Mesa takes x, y, z as they are (see run_rows()).
-    if (!c_.spec_) std::fill(eye[3], eye[3] + padded, 1.0f);
     const double* const raw_cols[3] = {raw[0], raw[1], raw[2]};
     float* const normal_cols[3] = {normal[0], normal[1], normal[2]};
     if (eye_normal_columns(inv_, c_.normalize_, rescale_, raw_cols, size_t(m), normal_cols)) *zero_normal = true;
     const lighting::SoaIn in{{eye[0], eye[1], eye[2], eye[3]}, {normal[0], normal[1], normal[2]},
                              {color[0], color[1], color[2], color[3]}};
-    lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns());
+    lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns(c_.prepared_f_.key));
   }
   // array_vertex(first + j), j in [0, m), into the columns when every array read holds floats:
   // the values it would give (a float in double, then back to float, is the float), without the

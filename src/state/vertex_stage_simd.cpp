@@ -26,7 +26,7 @@ HWY_INLINE V Row(D d, const glm::mat4& m, int r, V x, V y, V z, V w) {
 }
 
 void TransformColumns(const glm::mat4& to_clip, const glm::mat4* to_eye, const float* const obj[4], size_t count,
-                      glm::vec4* clip, float* const eye[4]) {
+                      glm::vec4* clip, float* const eye[4], bool eye_w_one) {
   const hn::ScalableTag<float> d;
   const size_t n = hn::Lanes(d);
   HWY_ALIGN float tail[4 * HWY_MAX_BYTES / sizeof(float)];
@@ -43,8 +43,10 @@ void TransformColumns(const glm::mat4& to_clip, const glm::mat4* to_eye, const f
       hn::StoreInterleaved4(c0, c1, c2, c3, d, tail);
       std::copy(tail, tail + 4 * (count - i), &clip[i].x);
     }
-    if (to_eye)
-      for (int r = 0; r < 4; ++r) hn::StoreU(Row(d, *to_eye, r, x, y, z, w), d, eye[r] + i);
+    if (to_eye) {
+      for (int r = 0; r < 3; ++r) hn::StoreU(Row(d, *to_eye, r, x, y, z, w), d, eye[r] + i);
+      hn::StoreU(eye_w_one ? hn::Set(d, 1.0f) : Row(d, *to_eye, 3, x, y, z, w), d, eye[3] + i);
+    }
   }
 }
 
@@ -86,8 +88,8 @@ HWY_EXPORT(TransformColumns);
 HWY_EXPORT(EyeNormalColumns);
 
 void transform_columns(const glm::mat4& to_clip, const glm::mat4* to_eye, const float* const obj[4], size_t count,
-                       glm::vec4* clip, float* const eye[4]) {
-  HWY_DYNAMIC_DISPATCH(TransformColumns)(to_clip, to_eye, obj, count, clip, eye);
+                       glm::vec4* clip, float* const eye[4], bool eye_w_one) {
+  HWY_DYNAMIC_DISPATCH(TransformColumns)(to_clip, to_eye, obj, count, clip, eye, eye_w_one);
 }
 
 bool eye_normal_columns(const glm::dmat3& inv, bool normalize, double rescale, const double* const raw[3],
