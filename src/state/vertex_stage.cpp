@@ -224,12 +224,43 @@ class VertexStage {
     };
     const ClientArray &va = c_.vertex_array_, &na = c_.normal_array_, &ca = c_.color_array_;
     const int vn = va.size, cn = ca.size;
-    for (int j = 0; j < m; ++j) {
-      const uint8_t* p = element(va, first + j);
-      obj[0][j] = at(p, 0), obj[1][j] = vn > 1 ? at(p, 1) : 0.0f;
-      obj[2][j] = vn > 2 ? at(p, 2) : 0.0f, obj[3][j] = vn > 3 ? at(p, 3) : 1.0f;
+    // Elements of 3 or 4 floats side by side: a vector of elements at a time (float_columns).
+    const auto packed = [](const ClientArray& a) {
+      return !a.repeated && (a.size == 3 || a.size == 4) && (a.stride == 0 || size_t(a.stride) == size_t(a.size) * 4);
+    };
+    if (packed(va)) {
+      float* const cols[4] = {obj[0], obj[1], obj[2], obj[3]};
+      float_columns(element(va, first), vn, size_t(m), cols);
+      if (vn == 3) std::fill(obj[3], obj[3] + m, 1.0f);
+    } else {
+      for (int j = 0; j < m; ++j) {
+        const uint8_t* p = element(va, first + j);
+        obj[0][j] = at(p, 0), obj[1][j] = vn > 1 ? at(p, 1) : 0.0f;
+        obj[2][j] = vn > 2 ? at(p, 2) : 0.0f, obj[3][j] = vn > 3 ? at(p, 3) : 1.0f;
+      }
     }
     const bool lit = c_.lighting_;
+    if (lit && na.enabled && na.size == 3 && packed(na)) {
+      double* const cols[3] = {raw[0], raw[1], raw[2]};
+      double_columns(element(na, first), size_t(m), cols);
+    } else if (lit) {
+      for (int j = 0; j < m; ++j) {
+        if (na.enabled) {
+          const uint8_t* p = element(na, first + j);
+          for (int k = 0; k < 3; ++k) raw[k][j] = at(p, k);
+        } else {
+          for (int k = 0; k < 3; ++k) raw[k][j] = c_.normal_[k];
+        }
+      }
+    }
+    // The lighting reads the colour only for colour material (lighting_simd.cpp).
+    if (lit && !c_.prepared_f_.key.color_material()) return;
+    if (lit && ca.enabled && packed(ca)) {
+      float* const cols[4] = {color[0], color[1], color[2], color[3]};
+      float_columns(element(ca, first), cn, size_t(m), cols);
+      if (cn == 3) std::fill(color[3], color[3] + m, 1.0f);
+      return;
+    }
     float current[4];
     for (int k = 0; k < 4; ++k) current[k] = float(c_.color_[k]);
     for (int j = 0; j < m; ++j) {
@@ -245,15 +276,6 @@ class VertexStage {
         continue;
       }
       for (int k = 0; k < 4; ++k) color[k][j] = ca.enabled ? float(rgba[k]) : current[k];
-    }
-    if (!lit) return;
-    for (int j = 0; j < m; ++j) {
-      if (na.enabled) {
-        const uint8_t* p = element(na, first + j);
-        for (int k = 0; k < 3; ++k) raw[k][j] = at(p, k);
-      } else {
-        for (int k = 0; k < 3; ++k) raw[k][j] = c_.normal_[k];
-      }
     }
   }
 

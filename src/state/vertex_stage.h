@@ -2,6 +2,7 @@
 // .cpp files only). The stage itself is vertex_stage.cpp.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <glm/glm.hpp>
 
 namespace ffc::state {
@@ -27,5 +28,10 @@ void transform_columns(const glm::mat4& to_clip, const glm::mat4* to_eye, const 
                        glm::vec4* clip, float* const eye[4], bool eye_w_one = false);
 bool eye_normal_columns(const glm::dmat3& inv, bool normalize, double rescale, const double* const raw[3],
                         size_t count, float* const out[3]);
+// Columns from `count` packed elements of `comps` floats (3 or 4; any alignment): out[k][j] is
+// component k of element j, in float or (the normals' columns) in double. Reads nothing past
+// element count - 1 and writes nothing past out[k][count - 1].
+void float_columns(const uint8_t* packed, int comps, size_t count, float* const out[4]);
+void double_columns(const uint8_t* packed, size_t count, double* const out[3]);
 
 }  // namespace ffc::state
