@@ -118,6 +118,41 @@ TEST(SimdStage, NormalsNearAFloatsHalfwayPointRoundAsTheDivision) {
   simd::restrict("");
 }
 
+// The packed arrays' columns (float_columns, double_columns): every component of every element
+// in its column, from a pointer of any alignment, a partial last vector on every target, nothing
+// written past the last element.
+TEST(SimdStage, PackedArraysGiveTheirColumns) {
+  constexpr size_t kCount = 45, kPad = lighting::kSoaPad;
+  for (const std::string& t : simd::available()) {
+    ASSERT_TRUE(simd::restrict(t));
+    for (int comps : {3, 4})
+      for (size_t offset : {0, 1, 4}) {
+        std::vector<uint8_t> bytes(offset + kCount * size_t(comps) * 4);
+        for (size_t i = 0; i < kCount * size_t(comps); ++i) {
+          const float v = float(i) * 0.37f - 5;
+          std::memcpy(&bytes[offset + 4 * i], &v, 4);
+        }
+        std::vector<float> col[4];
+        for (auto& c : col) c.assign(kPad, -99.0f);
+        float* const cols[4] = {col[0].data(), col[1].data(), col[2].data(), col[3].data()};
+        state::float_columns(bytes.data() + offset, comps, kCount, cols);
+        std::vector<double> dcol[3];
+        for (auto& c : dcol) c.assign(kPad, -99.0);
+        double* const dcols[3] = {dcol[0].data(), dcol[1].data(), dcol[2].data()};
+        if (comps == 3) state::double_columns(bytes.data() + offset, kCount, dcols);
+        for (size_t j = 0; j < kPad; ++j)
+          for (int k = 0; k < 4; ++k) {
+            const float want = j < kCount && k < comps ? float(j * size_t(comps) + size_t(k)) * 0.37f - 5 : -99.0f;
+            ASSERT_EQ(col[k][j], want) << t << " comps " << comps << " offset " << offset << " element " << j;
+            if (comps == 3 && k < 3) {
+              ASSERT_EQ(dcol[k][j], double(want)) << t << " element " << j;
+            }
+          }
+      }
+  }
+  simd::restrict("");
+}
+
 struct Picture {
   std::vector<uint8_t> color;
   std::vector<uint32_t> depth;
