@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 #include <utility>
 #include <cmath>
+
+#include "simd/pow.h"
 
 namespace ffc::lighting {
 
@@ -24,6 +27,14 @@ template <typename T>
   V4<T> r;
   for (int k = 0; k < 4; ++k) r[k] = !(v[k] < T(1)) ? T(1) : v[k] > T(0) ? v[k] : T(0);
   return r;
+}
+
+// The powers (spot exponent, shininess) of bases max(0, x): in float the shared exp2(log2)
+// (simd/pow.h), the bits every SIMD target gives; the double reference keeps the C library's pow.
+template <typename T>
+[[gnu::always_inline]] inline T power(T base, T e) {
+  if constexpr (std::is_same_v<T, float>) return simd::pow_float(base, e);
+  else return std::pow(base, e);
 }
 
 }  // namespace
@@ -153,7 +164,7 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       if (S::spot(L)) {
         const T cos_angle = glm::dot(-vp, L.spot_dir);
         if (cos_angle < L.spot_cos) continue;  // outside the cone: no contribution at all
-        att *= std::pow(std::max(T(0), cos_angle), L.spot_exp);  // max(0, NaN) is 0, as in Mesa
+        att *= power(std::max(T(0), cos_angle), L.spot_exp);  // max(0, NaN) is 0, as in Mesa
       }
       const V3<T> amb = track_amb ? L.la * cm : L.amb[f];
       const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];
@@ -167,7 +178,7 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
           h = hl > 0 ? h / hl : V3<T>(0);
         }
         const V3<T> spe = track_spe ? L.ls * cm : L.spe[f];
-        const V3<T> s = std::pow(std::max(T(0), glm::dot(nf, h)), c.shininess[f]) * spe;
+        const V3<T> s = power(std::max(T(0), glm::dot(nf, h)), c.shininess[f]) * spe;
         if (S::separate_specular(key))
           sec += att * s;
         else

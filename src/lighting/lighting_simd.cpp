@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <limits>
 
 #include "lighting/lighting_simd.h"
 #include "simd/target.h"
@@ -55,22 +56,49 @@ HWY_INLINE V Max0(D d, V x) { return hn::IfThenElseZero(hn::Gt(x, hn::Zero(d)), 
 // !(x < 1) ? 1 : x > 0 ? x : 0: a NaN to 1, as light_impl's saturate.
 HWY_INLINE V Saturate(D d, V x) { return hn::IfThenElse(hn::Lt(x, hn::Set(d, 1.0f)), Max0(d, x), hn::Set(d, 1.0f)); }
 
-// std::pow(base, e) in the lanes of `active` (pow has no vector form with powf's bits). Lanes
-// outside keep `base`; the caller ignores them.
-HWY_INLINE V PowLanes(D d, V base, float e, M active) {
+#include "simd/pow_core.h"  // pow_double for this target (simd/pow.h)
+
+// The operations simd/pow.h's pow_double needs, on vectors of doubles.
+struct PowOps {
+  using DD = hn::ScalableTag<double>;
+  using DU = hn::RebindToUnsigned<DD>;
+  using V = hn::Vec<DD>;
+  using M = hn::Mask<DD>;
+  DD d;
+  DU du;
+  HWY_INLINE V set(double c) const { return hn::Set(d, c); }
+  HWY_INLINE V add(V a, V b) const { return hn::Add(a, b); }
+  HWY_INLINE V sub(V a, V b) const { return hn::Sub(a, b); }
+  HWY_INLINE V mul(V a, V b) const { return hn::Mul(a, b); }
+  HWY_INLINE V div(V a, V b) const { return hn::Div(a, b); }
+  HWY_INLINE M lt(V a, V b) const { return hn::Lt(a, b); }
+  HWY_INLINE M gt(V a, V b) const { return hn::Gt(a, b); }
+  HWY_INLINE M eq(V a, V b) const { return hn::Eq(a, b); }
+  HWY_INLINE V select(M m, V a, V b) const { return hn::IfThenElse(m, a, b); }
+  HWY_INLINE V and_bits(V v, uint64_t k) const { return hn::BitCast(d, hn::And(hn::BitCast(du, v), hn::Set(du, k))); }
+  HWY_INLINE V or_bits(V v, uint64_t k) const { return hn::BitCast(d, hn::Or(hn::BitCast(du, v), hn::Set(du, k))); }
+  HWY_INLINE V shr52(V v) const { return hn::BitCast(d, hn::ShiftRight<52>(hn::BitCast(du, v))); }
+  HWY_INLINE V shl52(V v) const { return hn::BitCast(d, hn::ShiftLeft<52>(hn::BitCast(du, v))); }
+};
+
+// pow(base, e) in every lane: simd/pow.h's exp2(log2) in double, half a vector of floats at a time
+// (a vector of doubles holds half as many), the scalar kernel's bits (simd::pow_float).
+HWY_INLINE V PowLanes(D d, V base, float e) {
   if (e == 0) return hn::Set(d, 1.0f);  // pow(x, 0) is 1 for every x, NaN included
-  constexpr size_t kMax = HWY_MAX_BYTES / sizeof(float);
-  HWY_ALIGN float b[kMax];
-  uint8_t bits[(kMax + 7) / 8 + 8] = {};
+  const PowOps o;
+  const hn::Rebind<float, PowOps::DD> dh;
+  HWY_ALIGN float b[HWY_MAX_BYTES / sizeof(float)];
   hn::Store(base, d, b);
-  hn::StoreMaskBits(d, active, bits);
-  const size_t n = hn::Lanes(d);
-  // A base of 0 (N.H <= 0 through max(0, x), the cone's edge at 90 degrees) or 1 is its own
-  // power for e > 0: pow is not called for it. (A NaN exponent passes Mesa's range test, and
-  // pow(0, NaN) is NaN: those go through pow.)
-  const bool positive = e > 0;
-  for (size_t i = 0; i < n; ++i)
-    if ((bits[i / 8] >> (i % 8) & 1) && !(positive && (b[i] == 0 || b[i] == 1))) b[i] = std::pow(b[i], e);
+  for (size_t i = 0; i < hn::Lanes(d); i += hn::Lanes(dh)) {
+    PowOps::M over;
+    const PowOps::V y = pow_double(o, hn::PromoteTo(o.d, hn::LoadU(dh, b + i)), double(e), &over);
+    auto r = hn::DemoteTo(dh, y);
+    if (!hn::AllFalse(o.d, over)) {  // +inf: the mask carried to the float lanes as 1.0
+      const auto inf = hn::Eq(hn::DemoteTo(dh, hn::IfThenElseZero(over, hn::Set(o.d, 1.0))), hn::Set(dh, 1.0f));
+      r = hn::IfThenElse(inf, hn::Set(dh, std::numeric_limits<float>::infinity()), r);
+    }
+    hn::StoreU(r, dh, b + i);
+  }
   return hn::Load(d, b);
 }
 
@@ -144,7 +172,7 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
         const V cos_angle = Dot(neg, Splat(d, L.spot_dir));
         lit = hn::Not(hn::Lt(cos_angle, hn::Set(d, L.spot_cos)));
         if (hn::AllFalse(d, lit)) continue;
-        att = hn::Mul(att, PowLanes(d, Max0(d, cos_angle), L.spot_exp, lit));
+        att = hn::Mul(att, PowLanes(d, Max0(d, cos_angle), L.spot_exp));
       }
       const V3s amb = track_amb ? Mul3(Splat(d, L.la), cm) : Splat(d, L.amb[f]);
       const V3s dif = track_dif ? Mul3(Splat(d, L.ld), cm) : Splat(d, L.dif[f]);
@@ -156,7 +184,7 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
           V3s h = Splat(d, L.half);
           if (local_viewer || local) h = UnitOrZero(d, Add3(vp, to_eye));
           const V3s spe = track_spe ? Mul3(Splat(d, L.ls), cm) : Splat(d, L.spe[f]);
-          const V3s s = Scale(PowLanes(d, Max0(d, Dot(nf, h)), c.shininess[f], facing), spe);
+          const V3s s = Scale(PowLanes(d, Max0(d, Dot(nf, h)), c.shininess[f]), spe);
           if (separate) sec = Select(facing, Add3(sec, Scale(att, s)), sec);
           else sum = Select(facing, Add3(sum, s), sum);
         }
@@ -165,10 +193,11 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
     }
     const V prgba[4] = {Saturate(d, prim.x), Saturate(d, prim.y), Saturate(d, prim.z), Saturate(d, alpha)};
     const V srgba[4] = {Saturate(d, sec.x), Saturate(d, sec.y), Saturate(d, sec.z), zero};
+    const bool secondary = separate || !out.keyed, copy_back = !TwoSide && !out.keyed;
     for (int k = 0; k < 4; ++k) {
       hn::StoreU(prgba[k], d, out.col[0][f][k] + i);
-      hn::StoreU(srgba[k], d, out.col[1][f][k] + i);
-      if (!TwoSide) {
+      if (secondary) hn::StoreU(srgba[k], d, out.col[1][f][k] + i);
+      if (copy_back) {
         hn::StoreU(prgba[k], d, out.col[0][1][k] + i);
         hn::StoreU(srgba[k], d, out.col[1][1][k] + i);
       }
@@ -179,7 +208,11 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
 template <bool TwoSide, bool Specular, unsigned Kind>
 void LightColumns(const Prepared<float>& c, const SoaIn& in, size_t count, const SoaOut& out) {
   const D d;
-  for (size_t i = 0; i < count; i += hn::Lanes(d)) LightVector<TwoSide, Specular, Kind>(d, c, in, i, out);
+  // Copies: the stores to the columns could alias the caller's structs (the compiler would load
+  // every column's pointer again for each store).
+  const SoaIn columns_in = in;
+  const SoaOut columns_out = out;
+  for (size_t i = 0; i < count; i += hn::Lanes(d)) LightVector<TwoSide, Specular, Kind>(d, c, columns_in, i, columns_out);
 }
 
 using Columns = void (*)(const Prepared<float>&, const SoaIn&, size_t, const SoaOut&);

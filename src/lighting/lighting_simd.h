@@ -1,8 +1,8 @@
 // The float lighting kernel many vertices at a time (Highway: compiled for every SIMD target,
 // chosen at run time, src/simd/target.h). It gives the bits of the scalar float kernel
 // (lighting.cpp's light_impl) on every target: each lane performs the scalar code's operations in
-// its order, with no fused multiply-add, and pow (no vector form with powf's bits) runs per lane
-// through the same std::pow. The double reference stays scalar.
+// its order, with no fused multiply-add, and pow is simd/pow.h's exp2(log2) in double, written once
+// for the scalar kernel and the vectors. The double reference stays scalar.
 #pragma once
 #include <cstddef>
 
@@ -24,6 +24,10 @@ struct SoaIn {
 };
 struct SoaOut {
   float* col[2][2][4];  // [primary, secondary][front, back][r, g, b, a], clamped to [0, 1]
+  // Whether only the columns the key makes are written: the back ones only with two-sided
+  // lighting (else the back colours are the front ones) and the secondary ones only with a
+  // separate specular colour (else they are 0). A third of the stores where the key has neither.
+  bool keyed = false;
 };
 
 // Lights the columns with the constants of `c` on the dispatched target; what the key leaves out

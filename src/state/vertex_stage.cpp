@@ -68,17 +68,27 @@ struct StageOut {
   const lighting::Lit<T>& lit_at(int j) const { return lit[j]; }
 };
 // The float stage lights columns (lighting_simd.h): its colours stay in columns, padded.
+// The kernel writes only the columns the key makes (SoaOut::keyed): `view` reads the back colours
+// from the front columns without two-sided lighting, and the secondary ones from a column of
+// zeros without a separate specular colour.
 template <int N>
 struct StageOut<float, N> {
   glm::vec4 clip[N];
   double fog[N];
   glm::dvec4 unlit[N];
   alignas(64) float lit[16][lighting::kSoaPad];  // [primary front, back, secondary front, back][r, g, b, a]
-  glm::vec4 colour(int which, int j) const { return {lit[4 * which][j], lit[4 * which + 1][j], lit[4 * which + 2][j], lit[4 * which + 3][j]}; }
+  const float* view[16];
+  alignas(64) static constexpr float kZeros[lighting::kSoaPad] = {};
+  glm::vec4 colour(int which, int j) const { return {view[4 * which][j], view[4 * which + 1][j], view[4 * which + 2][j], view[4 * which + 3][j]}; }
   lighting::Lit<float> lit_at(int j) const { return {{colour(0, j), colour(1, j)}, {colour(2, j), colour(3, j)}}; }
-  lighting::SoaOut columns() {
+  lighting::SoaOut columns(const lighting::Key& key) {
     lighting::SoaOut o;
     for (int k = 0; k < 16; ++k) o.col[k >> 3][k >> 2 & 1][k & 3] = lit[k];
+    o.keyed = true;
+    for (int k = 0; k < 16; ++k) {
+      const bool back = k >> 2 & 1, secondary = k >> 3;
+      view[k] = secondary && !key.separate_specular() ? kZeros : lit[back && !key.two_side() ? k & ~4 : k];
+    }
     return o;
   }
 };
@@ -186,20 +196,20 @@ class VertexStage {
     float* const eye_cols[4] = {eye[0], eye[1], eye[2], eye[3]};
     const float* const obj_cols[4] = {obj[0], obj[1], obj[2], obj[3]};
     const glm::mat4 to_eye = c_.modelview_f_.back().values();
-    transform_columns(c_.mvp_f_, need_eye ? &to_eye : nullptr, obj_cols, size_t(m), clip, eye_cols);
+    // GL 2.1 lights the vertex at (x/w, y/w, z/w); Mesa takes x, y, z as they are (see run_rows()):
+    // outside spec mode the eye w column is 1 (the fog reads only z).
+    transform_columns(c_.mvp_f_, need_eye ? &to_eye : nullptr, obj_cols, size_t(m), clip, eye_cols, lit && !c_.spec_);
     // Mesa's fixed-function vertex program (ffvertex_prog.c build_fog): |eye z| for
     // GL_FRAGMENT_DEPTH; see run_rows().
     if (fog_depth_)
       for (int j = 0; j < m; ++j) out.fog[j] = std::abs(double(eye[2][j]));
     if (!lit) return;
-    // GL 2.1 lights the vertex at (x/w, y/w, z/w); Mesa takes x, y, z as they are (see run_rows()).
-    if (!c_.spec_) std::fill(eye[3], eye[3] + padded, 1.0f);
     const double* const raw_cols[3] = {raw[0], raw[1], raw[2]};
     float* const normal_cols[3] = {normal[0], normal[1], normal[2]};
     if (eye_normal_columns(inv_, c_.normalize_, rescale_, raw_cols, size_t(m), normal_cols)) *zero_normal = true;
     const lighting::SoaIn in{{eye[0], eye[1], eye[2], eye[3]}, {normal[0], normal[1], normal[2]},
                              {color[0], color[1], color[2], color[3]}};
-    lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns());
+    lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns(c_.prepared_f_.key));
   }
   // array_vertex(first + j), j in [0, m), into the columns when every array read holds floats:
   // the values it would give (a float in double, then back to float, is the float), without the
@@ -214,12 +224,43 @@ class VertexStage {
     };
     const ClientArray &va = c_.vertex_array_, &na = c_.normal_array_, &ca = c_.color_array_;
     const int vn = va.size, cn = ca.size;
-    for (int j = 0; j < m; ++j) {
-      const uint8_t* p = element(va, first + j);
-      obj[0][j] = at(p, 0), obj[1][j] = vn > 1 ? at(p, 1) : 0.0f;
-      obj[2][j] = vn > 2 ? at(p, 2) : 0.0f, obj[3][j] = vn > 3 ? at(p, 3) : 1.0f;
+    // Elements of 3 or 4 floats side by side: a vector of elements at a time (float_columns).
+    const auto packed = [](const ClientArray& a) {
+      return !a.repeated && (a.size == 3 || a.size == 4) && (a.stride == 0 || size_t(a.stride) == size_t(a.size) * 4);
+    };
+    if (packed(va)) {
+      float* const cols[4] = {obj[0], obj[1], obj[2], obj[3]};
+      float_columns(element(va, first), vn, size_t(m), cols);
+      if (vn == 3) std::fill(obj[3], obj[3] + m, 1.0f);
+    } else {
+      for (int j = 0; j < m; ++j) {
+        const uint8_t* p = element(va, first + j);
+        obj[0][j] = at(p, 0), obj[1][j] = vn > 1 ? at(p, 1) : 0.0f;
+        obj[2][j] = vn > 2 ? at(p, 2) : 0.0f, obj[3][j] = vn > 3 ? at(p, 3) : 1.0f;
+      }
     }
     const bool lit = c_.lighting_;
+    if (lit && na.enabled && na.size == 3 && packed(na)) {
+      double* const cols[3] = {raw[0], raw[1], raw[2]};
+      double_columns(element(na, first), size_t(m), cols);
+    } else if (lit) {
+      for (int j = 0; j < m; ++j) {
+        if (na.enabled) {
+          const uint8_t* p = element(na, first + j);
+          for (int k = 0; k < 3; ++k) raw[k][j] = at(p, k);
+        } else {
+          for (int k = 0; k < 3; ++k) raw[k][j] = c_.normal_[k];
+        }
+      }
+    }
+    // The lighting reads the colour only for colour material (lighting_simd.cpp).
+    if (lit && !c_.prepared_f_.key.color_material()) return;
+    if (lit && ca.enabled && packed(ca)) {
+      float* const cols[4] = {color[0], color[1], color[2], color[3]};
+      float_columns(element(ca, first), cn, size_t(m), cols);
+      if (cn == 3) std::fill(color[3], color[3] + m, 1.0f);
+      return;
+    }
     float current[4];
     for (int k = 0; k < 4; ++k) current[k] = float(c_.color_[k]);
     for (int j = 0; j < m; ++j) {
@@ -235,15 +276,6 @@ class VertexStage {
         continue;
       }
       for (int k = 0; k < 4; ++k) color[k][j] = ca.enabled ? float(rgba[k]) : current[k];
-    }
-    if (!lit) return;
-    for (int j = 0; j < m; ++j) {
-      if (na.enabled) {
-        const uint8_t* p = element(na, first + j);
-        for (int k = 0; k < 3; ++k) raw[k][j] = at(p, k);
-      } else {
-        for (int k = 0; k < 3; ++k) raw[k][j] = c_.normal_[k];
-      }
     }
   }
 

@@ -9,6 +9,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <cstring>
 
 #include "state/vertex_stage.h"
 
@@ -26,7 +27,7 @@ HWY_INLINE V Row(D d, const glm::mat4& m, int r, V x, V y, V z, V w) {
 }
 
 void TransformColumns(const glm::mat4& to_clip, const glm::mat4* to_eye, const float* const obj[4], size_t count,
-                      glm::vec4* clip, float* const eye[4]) {
+                      glm::vec4* clip, float* const eye[4], bool eye_w_one) {
   const hn::ScalableTag<float> d;
   const size_t n = hn::Lanes(d);
   HWY_ALIGN float tail[4 * HWY_MAX_BYTES / sizeof(float)];
@@ -43,8 +44,10 @@ void TransformColumns(const glm::mat4& to_clip, const glm::mat4* to_eye, const f
       hn::StoreInterleaved4(c0, c1, c2, c3, d, tail);
       std::copy(tail, tail + 4 * (count - i), &clip[i].x);
     }
-    if (to_eye)
-      for (int r = 0; r < 4; ++r) hn::StoreU(Row(d, *to_eye, r, x, y, z, w), d, eye[r] + i);
+    if (to_eye) {
+      for (int r = 0; r < 3; ++r) hn::StoreU(Row(d, *to_eye, r, x, y, z, w), d, eye[r] + i);
+      hn::StoreU(eye_w_one ? hn::Set(d, 1.0f) : Row(d, *to_eye, 3, x, y, z, w), d, eye[3] + i);
+    }
   }
 }
 
@@ -75,6 +78,50 @@ bool EyeNormalColumns(const glm::dmat3& inv, bool normalize, double rescale, con
   return !hn::AllFalse(d, zero_met);
 }
 
+// The packed arrays' columns (vertex_stage.h): a vector of elements at a time through Highway's
+// interleaved loads, the rest one by one (copies: the client's pointer may have any alignment).
+void FloatColumns(const uint8_t* packed, int comps, size_t count, float* const out[4]) {
+  const hn::ScalableTag<float> d;
+  const size_t n = hn::Lanes(d);
+  size_t i = 0;
+  const float* src = reinterpret_cast<const float*>(packed);  // read through unaligned loads
+  hn::Vec<decltype(d)> c0, c1, c2, c3;
+  if (comps == 3) {
+    for (; i + n <= count; i += n) {
+      hn::LoadInterleaved3(d, src + 3 * i, c0, c1, c2);
+      hn::StoreU(c0, d, out[0] + i), hn::StoreU(c1, d, out[1] + i), hn::StoreU(c2, d, out[2] + i);
+    }
+  } else {
+    for (; i + n <= count; i += n) {
+      hn::LoadInterleaved4(d, src + 4 * i, c0, c1, c2, c3);
+      hn::StoreU(c0, d, out[0] + i), hn::StoreU(c1, d, out[1] + i), hn::StoreU(c2, d, out[2] + i);
+      hn::StoreU(c3, d, out[3] + i);
+    }
+  }
+  for (; i < count; ++i)
+    for (int k = 0; k < comps; ++k) std::memcpy(out[k] + i, packed + 4 * (size_t(comps) * i + size_t(k)), 4);
+}
+
+void DoubleColumns(const uint8_t* packed, size_t count, double* const out[3]) {
+  const hn::ScalableTag<double> d;
+  const hn::Rebind<float, decltype(d)> df;
+  const size_t n = hn::Lanes(d);
+  size_t i = 0;
+  const float* src = reinterpret_cast<const float*>(packed);
+  hn::Vec<decltype(df)> c0, c1, c2;
+  for (; i + n <= count; i += n) {
+    hn::LoadInterleaved3(df, src + 3 * i, c0, c1, c2);
+    hn::StoreU(hn::PromoteTo(d, c0), d, out[0] + i), hn::StoreU(hn::PromoteTo(d, c1), d, out[1] + i);
+    hn::StoreU(hn::PromoteTo(d, c2), d, out[2] + i);
+  }
+  for (; i < count; ++i)
+    for (int k = 0; k < 3; ++k) {
+      float f;
+      std::memcpy(&f, packed + 4 * (3 * i + size_t(k)), 4);
+      out[k][i] = f;
+    }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ffc::state
 HWY_AFTER_NAMESPACE();
@@ -84,10 +131,20 @@ namespace ffc::state {
 
 HWY_EXPORT(TransformColumns);
 HWY_EXPORT(EyeNormalColumns);
+HWY_EXPORT(FloatColumns);
+HWY_EXPORT(DoubleColumns);
+
+void float_columns(const uint8_t* packed, int comps, size_t count, float* const out[4]) {
+  HWY_DYNAMIC_DISPATCH(FloatColumns)(packed, comps, count, out);
+}
+
+void double_columns(const uint8_t* packed, size_t count, double* const out[3]) {
+  HWY_DYNAMIC_DISPATCH(DoubleColumns)(packed, count, out);
+}
 
 void transform_columns(const glm::mat4& to_clip, const glm::mat4* to_eye, const float* const obj[4], size_t count,
-                       glm::vec4* clip, float* const eye[4]) {
-  HWY_DYNAMIC_DISPATCH(TransformColumns)(to_clip, to_eye, obj, count, clip, eye);
+                       glm::vec4* clip, float* const eye[4], bool eye_w_one) {
+  HWY_DYNAMIC_DISPATCH(TransformColumns)(to_clip, to_eye, obj, count, clip, eye, eye_w_one);
 }
 
 bool eye_normal_columns(const glm::dmat3& inv, bool normalize, double rescale, const double* const raw[3],

@@ -86,6 +86,73 @@ TEST(SimdStage, ColumnTransformsGiveTheScalarFormulasBits) {
   simd::restrict("");
 }
 
+// Normals whose quotient lies within a few double steps of a float's halfway point, where a
+// shortcut for the division (a product with the reciprocal) would round to another float: x / 1.1
+// for such x, found here by the scalar formulas; every target gives the quotient's float
+// (GL_RESCALE_NORMAL with a scale of 1.1, an identity inverse).
+TEST(SimdStage, NormalsNearAFloatsHalfwayPointRoundAsTheDivision) {
+  const double scale = 1.1, inverse = 1 / scale;
+  std::vector<double> x;
+  for (float f = 0.1f; x.size() < 48 && f < 1; f = std::nextafter(f, 2.0f) + 1e-4f) {
+    const double half_up = (double(f) + double(std::nextafter(f, 2.0f))) / 2;  // halfway, exact in double
+    for (int k = -6; k <= 6; ++k) {
+      const double q = half_up + k * std::ldexp(1.0, std::ilogb(half_up) - 52);
+      const double v = q * scale;
+      if (float(v * inverse) != float(v / scale)) x.push_back(v);
+    }
+  }
+  ASSERT_GE(x.size(), 40u);  // the product would give other floats for these
+  const size_t padded = lighting::kSoaPad;
+  std::vector<double> raw[3];
+  for (auto& v : raw) v.assign(padded, 0.0);
+  std::copy(x.begin(), x.end(), raw[0].begin());
+  const double* const raw_cols[3] = {raw[0].data(), raw[1].data(), raw[2].data()};
+  for (const std::string& t : simd::available()) {
+    ASSERT_TRUE(simd::restrict(t));
+    std::vector<float> normal[3];
+    for (auto& v : normal) v.assign(padded, 0.0f);
+    float* const cols[3] = {normal[0].data(), normal[1].data(), normal[2].data()};
+    state::eye_normal_columns(glm::dmat3(1), false, scale, raw_cols, x.size(), cols);
+    for (size_t i = 0; i < x.size(); ++i) ASSERT_TRUE(same_bits(normal[0][i], float(x[i] / scale))) << t << " " << i;
+  }
+  simd::restrict("");
+}
+
+// The packed arrays' columns (float_columns, double_columns): every component of every element
+// in its column, from a pointer of any alignment, a partial last vector on every target, nothing
+// written past the last element.
+TEST(SimdStage, PackedArraysGiveTheirColumns) {
+  constexpr size_t kCount = 45, kPad = lighting::kSoaPad;
+  for (const std::string& t : simd::available()) {
+    ASSERT_TRUE(simd::restrict(t));
+    for (int comps : {3, 4})
+      for (size_t offset : {0, 1, 4}) {
+        std::vector<uint8_t> bytes(offset + kCount * size_t(comps) * 4);
+        for (size_t i = 0; i < kCount * size_t(comps); ++i) {
+          const float v = float(i) * 0.37f - 5;
+          std::memcpy(&bytes[offset + 4 * i], &v, 4);
+        }
+        std::vector<float> col[4];
+        for (auto& c : col) c.assign(kPad, -99.0f);
+        float* const cols[4] = {col[0].data(), col[1].data(), col[2].data(), col[3].data()};
+        state::float_columns(bytes.data() + offset, comps, kCount, cols);
+        std::vector<double> dcol[3];
+        for (auto& c : dcol) c.assign(kPad, -99.0);
+        double* const dcols[3] = {dcol[0].data(), dcol[1].data(), dcol[2].data()};
+        if (comps == 3) state::double_columns(bytes.data() + offset, kCount, dcols);
+        for (size_t j = 0; j < kPad; ++j)
+          for (int k = 0; k < 4; ++k) {
+            const float want = j < kCount && k < comps ? float(j * size_t(comps) + size_t(k)) * 0.37f - 5 : -99.0f;
+            ASSERT_EQ(col[k][j], want) << t << " comps " << comps << " offset " << offset << " element " << j;
+            if (comps == 3 && k < 3) {
+              ASSERT_EQ(dcol[k][j], double(want)) << t << " element " << j;
+            }
+          }
+      }
+  }
+  simd::restrict("");
+}
+
 struct Picture {
   std::vector<uint8_t> color;
   std::vector<uint32_t> depth;
