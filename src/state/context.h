@@ -120,6 +120,11 @@ class Context {
     normal_ = {x, y, z};
     return true;
   }
+  // A recent distinct corner of a glDrawArrays soup (soup.cpp): its floats' bits and its place.
+  struct SoupSlot {
+    uint32_t key[12];
+    uint32_t id, generation, pad[2];
+  };
   bool store_vertex(float x, float y, float z, float w) {
     if (!store_corners_ || lists_.mode != 0) return false;
     format_has_position_ = true;
@@ -518,6 +523,13 @@ class Context {
   std::array<CornerSlot, size_t(1) << kCornerSlotBits> corner_slots_{};
   uint32_t corner_generation_ = 0;
   void keep_list_vertex(float x, float y, float z, float w);
+  // glDrawArrays(GL_TRIANGLES) of a soup (soup.cpp): its repeated corners lit once, drawn from
+  // indices. False: not taken (small, or arrays the stage does not read as floats).
+  bool draw_soup(GLint first, GLsizei count);
+  std::vector<SoupSlot> soup_slots_;  // a cache per share
+  uint32_t soup_generation_ = 0;
+  std::vector<uint32_t> soup_index_;                // per corner: its distinct corner
+  std::vector<float> soup_staged_, soup_compact_;  // the distinct corners, per share and laid out
   // Defined here, constant: a thread_local defined elsewhere is read through a wrapper call.
   static inline thread_local Context* current_ = nullptr;
   raster::TriangleBins bins_;
