@@ -13,7 +13,7 @@
 namespace ffc {
 namespace {
 
-constexpr int kSize = 64;
+constexpr int kSize = 256;
 
 struct Picture {
   std::vector<uint8_t> color;
@@ -30,6 +30,26 @@ struct Soup {
   }
   size_t size() const { return pos.size() / 3; }
 };
+
+// An n x n grid of quads (two triangles each) over the picture, as a soup: an inner corner is sent
+// six times. `split_normals` / `split_colours`: the upper triangles' corners get another normal
+// or colour than the lower ones' at the same position (a pair that must not be shared).
+Soup grid(int n, bool split_normals, bool split_colours) {
+  Soup s;
+  auto corner = [&](int i, int j, bool upper) {
+    const float x = -0.9f + 1.8f * float(i) / float(n), y = -0.9f + 1.8f * float(j) / float(n);
+    // The split varies over the grid: a hash of sums meets each pair's difference afresh.
+    const float nz = split_normals && upper ? 0.5f + 0.3f * x * y : 0.9f;
+    const float g = split_colours && upper ? 0.6f + 0.3f * x * y : 0.3f;
+    s.corner(x, y, 0.2f * x * y, 0.3f * x, 0.3f * y, nz, 0.5f + 0.4f * x, g);
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      corner(i, j, false), corner(i + 1, j, false), corner(i + 1, j + 1, false);
+      corner(i, j, true), corner(i + 1, j + 1, true), corner(i, j + 1, true);
+    }
+  return s;
+}
 
 // `split_normals`: the rim corners' second use gets another normal (same position: no sharing);
 // `split_colours`: the same with the colour.
@@ -122,23 +142,26 @@ void expect_same(const std::vector<Soup>& soups, bool color_material) {
 }
 
 TEST(DrawPaths, RepeatedCornersDrawAsEveryCornerLitAlone) {
-  expect_same({fan(40, false, false)}, false);
-  // Large enough that many corners fall into one slot of the cache (several thousand corners).
+  expect_same({fan(100, false, false)}, false);
+  // Large enough that many corners fall into one slot of the cache, and that glDrawArrays finds
+  // the repeats on both threads (several thousand corners).
   expect_same({fan(3000, false, false)}, false);
+  expect_same({grid(120, false, false)}, false);
 }
 
 TEST(DrawPaths, ACornerWithTheSamePositionButAnotherNormalOrColourIsNotShared) {
-  // The colour is not hashed: both colours of a corner meet in one slot. The normal is: among
-  // 3000 pairs some collide, one replacing the other in the slot.
-  expect_same({fan(40, false, true)}, true);
-  expect_same({fan(3000, true, false)}, false);
-  expect_same({fan(3000, true, true)}, true);
+  // Immediate mode does not hash the colour: both colours of a corner meet in one slot. It hashes
+  // the normal, and glDrawArrays every attribute: among 30000 pairs some collide, one replacing
+  // the other in the slot.
+  expect_same({fan(100, false, true)}, true);
+  expect_same({grid(120, true, false)}, false);
+  expect_same({grid(120, false, true)}, true);
 }
 
 TEST(DrawPaths, NothingIsSharedWithAnEarlierGlBegin) {
   // The second fan sends the first's corners in another order, drawn over the first: an entry of
   // the first glBegin taken for the second would place a corner wrongly.
-  Soup a = fan(30, false, false), b = fan(30, false, false);
+  Soup a = fan(100, false, false), b = fan(100, false, false);
   std::vector<float> pos, normal, color;
   for (size_t t = b.size() / 3; t-- > 0;)
     for (size_t k = 0; k < 3; ++k) {
