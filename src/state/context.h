@@ -531,7 +531,9 @@ class Context {
   std::vector<uint32_t> soup_index_;                // per corner: its distinct corner
   std::vector<float> soup_staged_, soup_compact_;  // the distinct corners, per share and laid out
   // Defined here, constant: a thread_local defined elsewhere is read through a wrapper call.
-  static inline thread_local Context* current_ = nullptr;
+  // Initial-exec, as the classic libGL's table (src/classic/gl/table.h): in that shared library
+  // the default model calls __tls_get_addr on every read.
+  static inline thread_local Context* current_ __attribute__((tls_model("initial-exec"))) = nullptr;
   raster::TriangleBins bins_;
 
   // The current raster position (glRasterPos): window position and clip w, its colour.
