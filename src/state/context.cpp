@@ -10,12 +10,7 @@
 
 namespace ffc::state {
 
-namespace {
-thread_local Context* g_current = nullptr;
-}  // namespace
-
-Context* Context::current() { return g_current; }
-void Context::make_current(Context* c) { g_current = c; }
+void Context::make_current(Context* c) { current_ = c; }
 
 Context::Context(int width, int height, Precision precision)
     : fb_(width, height), precision_(precision), viewport_(0, 0, width, height) {

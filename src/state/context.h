@@ -111,8 +111,30 @@ class Context {
     threads_ = n < 1 ? 1 : n;
     workers_.reset();
   }  // the rasterizer's; the picture does not change
-  static Context* current();
+  // Inline: every entry point reads it (a call per glVertex cost as much as the store it guards).
+  static Context* current() { return current_; }
   static void make_current(Context* c);
+
+  // Immediate mode's stores (soft_gl_immediate.cpp): inside a glBegin(GL_TRIANGLES) whose corners
+  // are kept for the triangle list (immediate_list_), with no list compiling and no sink drawing,
+  // a glNormal or glVertex only stores what Normal() and Vertex() would. False: nothing done, the
+  // caller takes the full call.
+  bool store_normal(double x, double y, double z) {
+    if (!store_corners_ || !normal_in_format_ || lists_.mode != 0) return false;
+    normal_ = {x, y, z};
+    return true;
+  }
+  // A recent distinct corner of a glDrawArrays soup (soup.cpp): its floats' bits and its place.
+  struct SoupSlot {
+    uint32_t key[12];
+    uint32_t id, generation, pad[2];
+  };
+  bool store_vertex(float x, float y, float z, float w) {
+    if (!store_corners_ || lists_.mode != 0) return false;
+    format_has_position_ = true;
+    keep_list_vertex(x, y, z, w);
+    return true;
+  }
 
   // --- GL entry points (names as in GL, without the prefix) ---
   GLenum GetError();
@@ -241,7 +263,7 @@ class Context {
 
   // Not GL: a sink that draws instead of the vertex stage and rasterizer while rendering
   // (draw_sink.h; the GLSL backend's), and the state it reads (draw_sink.cpp).
-  void set_draw_sink(DrawSink* s) { sink_ = s; }
+  void set_draw_sink(DrawSink* s) { sink_ = s, store_corners_ = false; }
   SinkState sink_state();
 
   // Not GL: what the checker and tests read.
@@ -486,15 +508,36 @@ class Context {
   raster::ListVertices list_vertices_;
   bool triangle_lists_ = true;
   bool immediate_list_ = false;  // glBegin(GL_TRIANGLES) on the list: vertices kept as sent, lit at glEnd
+  bool store_corners_ = false;    // immediate_list_, not spec, no sink: store_normal/store_vertex apply
   // One entry per distinct vertex sent (position, and the normal and colour where the lighting
   // reads them); list_corner_ names each glVertex's entry, the triangles' indices. A vertex equal
-  // to a recent one (found through list_seen_, by a hash of its values) is that entry again: lit once.
+  // to a recent one (found in corner_slots_) is that entry again: lit once (immediate.cpp).
   std::vector<glm::vec4> list_pos_;
   std::vector<glm::dvec3> list_normal_;
   std::vector<glm::dvec4> list_color_;
   std::vector<uint32_t> list_corner_;
-  std::array<uint32_t, 1024> list_seen_{};  // entry + 1 by hash; checked against the values before use
-  bool keep_list_vertex(const glm::dvec4& obj);  // false: a new entry
+  // A direct-mapped cache of recent entries by a hash of position and normal. Each slot holds the
+  // key's bits beside the entry, so a repeat is found reading the slot alone (list_pos_ and
+  // list_normal_ outgrow the caches); a slot of an older glBegin has another generation.
+  struct CornerSlot {
+    uint64_t pos[2], normal[3];
+    uint32_t entry, generation;
+  };
+  static constexpr int kCornerSlotBits = 9;  // 24 KiB, in L1; a bigger one finds few more repeats
+  std::array<CornerSlot, size_t(1) << kCornerSlotBits> corner_slots_{};
+  uint32_t corner_generation_ = 0;
+  void keep_list_vertex(float x, float y, float z, float w);
+  // glDrawArrays(GL_TRIANGLES) of a soup (soup.cpp): its repeated corners lit once, drawn from
+  // indices. False: not taken (small, or arrays the stage does not read as floats).
+  bool draw_soup(GLint first, GLsizei count);
+  std::vector<SoupSlot> soup_slots_;  // a cache per share
+  uint32_t soup_generation_ = 0;
+  std::vector<uint32_t> soup_index_;                // per corner: its distinct corner
+  std::vector<float> soup_staged_, soup_compact_;  // the distinct corners, per share and laid out
+  // Defined here, constant: a thread_local defined elsewhere is read through a wrapper call.
+  // Initial-exec, as the classic libGL's table (src/classic/gl/table.h): in that shared library
+  // the default model calls __tls_get_addr on every read.
+  static inline thread_local Context* current_ __attribute__((tls_model("initial-exec"))) = nullptr;
   raster::TriangleBins bins_;
 
   // The current raster position (glRasterPos): window position and clip w, its colour.

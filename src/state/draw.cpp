@@ -50,6 +50,7 @@ void Context::draw_arrays(GLenum mode, GLint first, GLsizei count) {
   prim_mode_ = mode;
   verts_.clear();
   if (triangle_list_path(mode)) {
+    if (draw_soup(first, count)) return;  // soup.cpp
     arrays_to_list(first, count);
     return draw_triangle_list(nullptr, size_t(count) / 3);
   }

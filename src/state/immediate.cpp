@@ -3,6 +3,7 @@
 // (a repeated one shared) and lights them together at glEnd on the triangle-list path; every
 // other primitive keeps them in a batch lit before anything reads them (light_pending).
 #include <algorithm>
+#include <cstring>
 
 #include "state/context.h"
 #include "state/gl_rules.h"
@@ -162,13 +163,60 @@ void Context::Begin(GLenum mode) {
   // lit together at glEnd, unless a glMaterial between them changes the lighting
   // (leave_triangle_list()).
   immediate_list_ = triangle_list_path(mode);
+  store_corners_ = immediate_list_ && !spec_ && !sink_draws();
   list_pos_.clear(), list_normal_.clear(), list_color_.clear(), list_corner_.clear();
+  if (immediate_list_ && ++corner_generation_ == 0) {  // wrapped: no slot may look current
+    std::fill(corner_slots_.begin(), corner_slots_.end(), CornerSlot{});
+    corner_generation_ = 1;
+  }
+}
+
+namespace {
+uint64_t bits(double d) {
+  uint64_t u;
+  std::memcpy(&u, &d, sizeof u);
+  return u;
+}
+uint64_t bits(float lo, float hi) {  // from registers: the floats never pass through memory
+  uint32_t a, b;
+  std::memcpy(&a, &lo, sizeof a);
+  std::memcpy(&b, &hi, sizeof b);
+  return a | uint64_t(b) << 32;
+}
+}  // namespace
+
+// Immediate mode's GL_TRIANGLES: the vertex kept for the list, only what the lighting reads (the
+// position rounded to float, as the float path rounds it anyway). A vertex equal to one a slot
+// holds (bit for bit, under the same state: nothing between glBegin and glEnd changes the
+// lighting but glMaterial, which leaves the list) shares that entry's lit colours.
+void Context::keep_list_vertex(float x, float y, float z, float w) {
+  const bool normal = lighting_, color = !lighting_ || color_material_;
+  const uint64_t p[2] = {bits(x, y), bits(z, w)};
+  const uint64_t n[3] = {bits(normal_.x), bits(normal_.y), bits(normal_.z)};
+  // Independent products summed (a chain of multiplies would wait on each other): the top bits
+  // depend on every bit. The normal is hashed even where it is not compared: only the slot
+  // chosen depends on it.
+  const uint64_t h = p[0] * 0x9E3779B97F4A7C15ull + p[1] * 0xC2B2AE3D27D4EB4Full + (n[0] ^ n[1] ^ n[2]) * 0x165667B19E3779F9ull;
+  CornerSlot& s = corner_slots_[h >> (64 - kCornerSlotBits)];
+  // One branch: the comparisons are cheap next to a mispredicted one.
+  bool same = (s.generation == corner_generation_) & (s.pos[0] == p[0]) & (s.pos[1] == p[1]);
+  if (normal) same &= (s.normal[0] == n[0]) & (s.normal[1] == n[1]) & (s.normal[2] == n[2]);
+  if (same && (!color || std::memcmp(&list_color_[s.entry], &color_, sizeof color_) == 0)) {
+    list_corner_.push_back(s.entry);
+    return;
+  }
+  const auto e = uint32_t(list_pos_.size());
+  list_pos_.emplace_back(x, y, z, w);
+  if (normal) list_normal_.push_back(normal_);
+  if (color) list_color_.push_back(color_);
+  list_corner_.push_back(e);
+  s = {{p[0], p[1]}, {n[0], n[1], n[2]}, e, corner_generation_};
 }
 
 // Also lights the vertices kept for the batch: the caller is about to change what they read.
 void Context::leave_triangle_list() {
   if (immediate_list_) {
-    immediate_list_ = false;
+    immediate_list_ = store_corners_ = false;
     for (const uint32_t e : list_corner_) {
       const glm::dvec3 normal = normal_;
       const glm::dvec4 color = color_;
@@ -184,7 +232,7 @@ void Context::leave_triangle_list() {
 
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
-  in_begin_ = false;
+  in_begin_ = store_corners_ = false;
   if (sink_draws()) return sink_end(), flush_stored_keeping_format();  // draw_sink.cpp
   if (!immediate_list_) {
     light_pending();

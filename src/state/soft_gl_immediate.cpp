@@ -25,11 +25,15 @@ GLfloat unit(GLdouble c) { return GLfloat(c); }
 }  // namespace
 
 // The by-value calls that every variant ends in, and that lists record.
+// The first test is immediate mode's store (Context::store_vertex), which stands for the rest
+// inside a glBegin(GL_TRIANGLES) on the triangle list.
 void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w) {
+  if (Context* c = C(); c && c->store_vertex(float(x), float(y), float(z), float(w))) return;
   LISTABLE_VERTEX(VertexValues, x, y, z, w);
   if (Context* c = C()) c->Vertex(x, y, z, w);
 }
 void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z) {
+  if (Context* c = C(); c && c->store_normal(x, y, z)) return;
   LISTABLE_VERTEX(NormalValues, x, y, z);
   if (Context* c = C()) c->Normal(x, y, z);
 }
@@ -55,14 +59,33 @@ void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q) {
   void APIENTRY Vertex4##s##v(const T* v) { VertexValues(v[0], v[1], v[2], v[3]); }
 FFC_VERTEX(GLshort, s)
 FFC_VERTEX(GLint, i)
-FFC_VERTEX(GLfloat, f)
 FFC_VERTEX(GLdouble, d)
 #undef FFC_VERTEX
+// The float forms try the store themselves: VertexValues' own test comes after a conversion to
+// double and a call.
+#define FFC_STORE_VERTEX(x, y, z, w) \
+  if (Context* c = C(); c && c->store_vertex(x, y, z, w)) return
+void APIENTRY Vertex2f(GLfloat x, GLfloat y) { VertexValues(x, y, 0, 1); }
+void APIENTRY Vertex2fv(const GLfloat* v) { VertexValues(v[0], v[1], 0, 1); }
+void APIENTRY Vertex3f(GLfloat x, GLfloat y, GLfloat z) {
+  FFC_STORE_VERTEX(x, y, z, 1);
+  VertexValues(x, y, z, 1);
+}
+void APIENTRY Vertex3fv(const GLfloat* v) {
+  FFC_STORE_VERTEX(v[0], v[1], v[2], 1);
+  VertexValues(v[0], v[1], v[2], 1);
+}
+void APIENTRY Vertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { VertexValues(x, y, z, w); }
+void APIENTRY Vertex4fv(const GLfloat* v) { VertexValues(v[0], v[1], v[2], v[3]); }
+#undef FFC_STORE_VERTEX
 
 // glNormal3: integers onto [-1, 1].
 #define FFC_NORMAL(T, s)                                                                       \
-  void APIENTRY Normal3##s(T x, T y, T z) { NormalValues(unit(x), unit(y), unit(z)); }        \
-  void APIENTRY Normal3##s##v(const T* v) { NormalValues(unit(v[0]), unit(v[1]), unit(v[2])); }
+  void APIENTRY Normal3##s(T x, T y, T z) {                                                   \
+    if (Context* c = C(); c && c->store_normal(unit(x), unit(y), unit(z))) return;           \
+    NormalValues(unit(x), unit(y), unit(z));                                                  \
+  }                                                                                           \
+  void APIENTRY Normal3##s##v(const T* v) { Normal3##s(v[0], v[1], v[2]); }
 FFC_NORMAL(GLbyte, b)
 FFC_NORMAL(GLshort, s)
 FFC_NORMAL(GLint, i)

@@ -341,7 +341,7 @@ raster::Vertex Context::vertex(const glm::dvec4& obj, const glm::dvec3& normal, 
 
 void Context::process_vertex(const glm::dvec4& obj) {
   if (immediate_list_) {  // lit with the others at glEnd
-    keep_list_vertex(obj);
+    keep_list_vertex(float(obj.x), float(obj.y), float(obj.z), float(obj.w));  // immediate.cpp
     return;
   }
   // Kept for the batch: a store here, the stage later for many vertices at once. A vertex equal
@@ -357,43 +357,6 @@ void Context::process_vertex(const glm::dvec4& obj) {
   const bool finite = std::isfinite(obj.x) && std::isfinite(obj.y) && std::isfinite(obj.z) && std::isfinite(obj.w) &&
                       (!lighting_ || (std::isfinite(normal_.x) && std::isfinite(normal_.y) && std::isfinite(normal_.z)));
   if (!finite) deviations_.insert(kNonfiniteVertex);
-}
-
-// Immediate mode's GL_TRIANGLES: the vertex kept for the list, only what the lighting reads (the
-// position rounded to float, as the float path rounds it anyway). Returns whether it repeats an
-// entry kept before, whose lit colours it then shares (the state cannot change the lighting
-// between the two inside glBegin/glEnd, but for glMaterial, which leaves the list).
-bool Context::keep_list_vertex(const glm::dvec4& obj) {
-  const glm::vec4 pos(obj);
-  const bool normal = lighting_, color = !lighting_ || color_material_;
-  uint64_t words[2 + 3 + 4] = {};
-  std::memcpy(words, &pos, sizeof pos);
-  if (normal) std::memcpy(words + 2, &normal_, sizeof normal_);
-  if (color) std::memcpy(words + 5, &color_, sizeof color_);
-  // The words' products are independent (a chain of multiplies, each waiting for the one before,
-  // cost as much as a quarter of immediate mode's frame); one more mix spreads them to the top bits.
-  static constexpr uint64_t kOdd[9] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull,
-                                       0xD6E8FEB86659FD93ull, 0xFF51AFD7ED558CCDull, 0xC4CEB9FE1A85EC53ull,
-                                       0x94D049BB133111EBull, 0xBF58476D1CE4E5B9ull, 0x2545F4914F6CDD1Dull};
-  uint64_t h = 0;
-  for (int k = 0; k < 9; ++k) h += words[k] * kOdd[k];
-  h = (h ^ h >> 31) * kOdd[0];
-  uint32_t& seen = list_seen_[h >> 54];
-  if (seen != 0 && seen <= list_pos_.size()) {
-    const size_t e = seen - 1;
-    if (std::memcmp(&list_pos_[e], &pos, sizeof pos) == 0 &&
-        (!normal || std::memcmp(&list_normal_[e], &normal_, sizeof normal_) == 0) &&
-        (!color || std::memcmp(&list_color_[e], &color_, sizeof color_) == 0)) {
-      list_corner_.push_back(uint32_t(e));
-      return true;
-    }
-  }
-  list_pos_.push_back(pos);
-  if (normal) list_normal_.push_back(normal_);
-  if (color) list_color_.push_back(color_);
-  seen = uint32_t(list_pos_.size());
-  list_corner_.push_back(seen - 1);
-  return false;
 }
 
 void Context::light_pending() {
