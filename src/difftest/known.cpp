@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "state/context.h"
+#include "state/display_list.h"
 
 namespace ffc::difftest {
 
@@ -42,6 +43,33 @@ bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& me
     return call_matches(c) && i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR &&
            !(m.kind == "error" && int(i) == m.call);
   });
+}
+
+// Whether the glEndList at `end_list` closes a list that compiled a glCallList(s) and then met
+// what makes Mesa copy or flush its list's vertex store: the call itself inside the list's open
+// glBegin, a glBegin still open at the glEndList, or an attribute first sent after a vertex of a
+// later primitive (a wrap). Measured: each crashes Mesa at the glEndList, in both list modes, for
+// any list name (0 and names never defined too); none of them without the glCallList. Which calls
+// took effect is read from soft's errors (Mesa's side crashed): a glNewList soft refused opened
+// nothing.
+bool call_list_then_wrap(const Stream& s, const SideResult& soft, size_t end_list) {
+  bool compiling = false, open = false, called = false, wrapped = false;
+  int vertices = 0;
+  auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
+  for (size_t i = 0; i < end_list && i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = called = wrapped = false;
+    if (!compiling) continue;
+    if (n == "glBegin") open = true, vertices = 0;
+    else if (n == "glEnd") open = false;
+    else if (n == "glCallList" || n == "glCallLists") called = true, wrapped |= open;
+    else if (starts(n, "glVertex") || n == "glArrayElement") ++vertices;
+    else if (called && open && vertices > 0 &&
+             (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord") || starts(n, "glEdgeFlag")))
+      wrapped = true;
+  }
+  return compiling && called && (wrapped || open);
 }
 
 // A deviation soft reported while drawing, which can only change what was drawn.
@@ -162,6 +190,16 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kDrawPixelsFormat) !=
                             soft.deviations.end();
        }},
+      // Row 55: see call_list_then_wrap.
+      {"mesa-list-call-then-wrap-crash",
+       "Mesa 22.3 segfaults in glEndList when a list compiled a glCallList or glCallLists and then its vertex "
+       "store wraps or flushes inside a glBegin of the list (GL: compiled like any other call); soft compiles it",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         if (m.kind != "crash" || m.key != "crash mesa glEndList" || m.call < 0) return false;
+         return call_list_then_wrap(s, soft, size_t(m.call));
+       },
+       true},
+      drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56
@@ -170,9 +208,10 @@ const std::vector<KnownDeviation>& known_deviations() {
 }
 
 const KnownDeviation* explain(const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
-  if (m.kind == "crash" || m.kind == "hang") return nullptr;  // never explained away
+  if (m.kind == "hang") return nullptr;  // never explained away
+  const bool crash = m.kind == "crash";
   for (const KnownDeviation& d : known_deviations())
-    if (d.explains(s, m, mesa, soft)) return &d;
+    if ((!crash || d.mesa_crash) && d.explains(s, m, mesa, soft)) return &d;
   return nullptr;
 }
 

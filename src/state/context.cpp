@@ -52,6 +52,11 @@ bool Context::outside_begin_end_keeping_vertices() {
   return !in_begin_;
 }
 
+// glGet*, glGetLight and glGetMaterial while a list compiles: Mesa answers them through its
+// compiling dispatch, which has no check, so a GL_COMPILE_AND_EXECUTE list's wrapped primitive
+// (display_list.cpp) leaves them answered; glIsEnabled and glGetError check for themselves.
+bool Context::query_allowed() { return lists_.mode != 0 || outside_begin_end_keeping_vertices(); }
+
 pool::Workers& Context::workers() {
   if (!workers_) workers_ = std::make_unique<pool::Workers>(threads_);
   return *workers_;

@@ -254,7 +254,7 @@ void Context::flush_stored() {
   format_has_position_ = false;
 }
 void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
-  if (!outside_begin_end_keeping_vertices()) return;
+  if (!query_allowed()) return;
   const int i = light_index(light), n = light_param_count(pname);
   if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
   const lighting::LightParams& l = lights_[i];
@@ -275,8 +275,8 @@ void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
 }
 
 void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
-  if (!outside_begin_end()) return;
-  flush_stored();  // Mesa: copied and emptied (measured: a glMaterial before it no longer overrides tracking)
+  if (in_begin_ && !query_allowed()) return;  // inside a list's wrapped primitive: answered, nothing flushed
+  if (!in_begin_ && outside_begin_end()) flush_stored();  // Mesa: copied and emptied (measured: a glMaterial before it no longer overrides tracking)
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
   const lighting::MaterialParams& m = materials_[face == GL_BACK];
   glm::dvec4 v;

@@ -56,7 +56,7 @@ bool compiled_only(const A&... a) {
     return true;
   }
   if constexpr (K == ListKind::Vertex) {
-    if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0;
+    if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...);
     if constexpr (same_entry<Fn, &End>()) {
       // A glEnd without its glBegin in the list: Mesa records it and executes nothing now.
       if (!ls.open) return l->record<Fn>(a...), true;
@@ -64,7 +64,6 @@ bool compiled_only(const A&... a) {
     }
   }
   l->record<Fn>(a...);
-  if (!c->list_executes()) return true;
   if constexpr (K == ListKind::Vertex) {
     int kind = 0;  // what enters Mesa's vertex format: a vertex (-1), an attribute (a bit), or neither
     if constexpr (same_entry<Fn, &VertexValues>()) kind = -1;
@@ -72,10 +71,11 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &ColorValues>()) kind = 2;
     if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
-    c->hold_back(kind);
-    c->list_held_back().record<Fn>(a...);
+    c->hold_back(kind);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
+    if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     return true;
   }
+  if (!c->list_executes()) return true;
   if constexpr (K == ListKind::State) c->run_held_back();
   return false;
 }
