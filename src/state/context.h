@@ -167,7 +167,7 @@ class Context {
 
   void Begin(GLenum mode);
   void End();
-  void Vertex(double x, double y, double z, double w);
+  void Vertex(double x, double y, double z, double w, int size = 0);  // size: components sent (0: not known)
   void Normal(double x, double y, double z);
   void Color(double r, double g, double b, double a, int components = 4);  // glColor3*: 3
   void VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p);
@@ -342,7 +342,8 @@ class Context {
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void set_color_varies(bool v);
-  void vbo_wrap(bool alpha_one);  // immediate.cpp: an attribute joins Mesa's vbo format mid-primitive
+  void vbo_wrap(bool alpha_one);
+  void position_size(int size);  // immediate.cpp: a position's components join Mesa's vbo format  // immediate.cpp: an attribute joins Mesa's vbo format mid-primitive
   bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
   void flush_primitive();  // primitive.cpp, through its Assembly
   friend class Assembly;
@@ -433,6 +434,7 @@ class Context {
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
   bool vertices_kept_ = false;            // Mesa would still hold this glBegin/glEnd's vertices
   bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
+  int position_size_ = 0;                 // and its size then (position_size)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
   // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
   struct CurrentValues {

@@ -16,7 +16,7 @@ namespace ffc::state::entry {
 #include "gl/gl_functions.inc"
 #undef FFC_GL_FUNCTION
 // The by-value calls the immediate-mode variants end in (soft_gl_immediate.cpp).
-void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w, GLint size);  // size: 2, 3 or 4 components
 void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z);
 void APIENTRY ColorValues(GLdouble r, GLdouble g, GLdouble b, GLdouble a, GLint components);
 void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q);
@@ -54,6 +54,17 @@ bool compiled_only(const A&... a) {
   if (K == ListKind::State && ls.open) {
     c->record_list_error(GL_INVALID_OPERATION);
     return true;
+  }
+  // Outside the list's own glBegin/glEnd a vertex-stream call other than glBegin and glEnd compiles
+  // as a state call does (Mesa swaps its vertex format out there: "compiled as opcodes"), so in
+  // GL_COMPILE_AND_EXECUTE it flushes what was held back and executes at once (measured: glNormal3d
+  // then glGet of GL_CURRENT_NORMAL; repro list_attribute_outside_begin.txt).
+  constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
+  if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
+    l->record<Fn>(a...);
+    if (!c->list_executes()) return true;
+    c->run_held_back();
+    return false;
   }
   if constexpr (K == ListKind::Vertex) {
     if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...);

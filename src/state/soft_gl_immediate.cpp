@@ -25,9 +25,9 @@ GLfloat unit(GLdouble c) { return GLfloat(c); }
 }  // namespace
 
 // The by-value calls that every variant ends in, and that lists record.
-void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w) {
-  LISTABLE_VERTEX(VertexValues, x, y, z, w);
-  if (Context* c = C()) c->Vertex(x, y, z, w);
+void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w, GLint size) {
+  LISTABLE_VERTEX(VertexValues, x, y, z, w, size);
+  if (Context* c = C()) c->Vertex(x, y, z, w, size);
 }
 void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z) {
   LISTABLE_VERTEX(NormalValues, x, y, z);
@@ -47,12 +47,12 @@ void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q) {
 
 // glVertex: positions convert directly; missing z is 0, missing w is 1.
 #define FFC_VERTEX(T, s)                                                                                   \
-  void APIENTRY Vertex2##s(T x, T y) { VertexValues(x, y, 0, 1); }                                        \
-  void APIENTRY Vertex2##s##v(const T* v) { VertexValues(v[0], v[1], 0, 1); }                            \
-  void APIENTRY Vertex3##s(T x, T y, T z) { VertexValues(x, y, z, 1); }                                   \
-  void APIENTRY Vertex3##s##v(const T* v) { VertexValues(v[0], v[1], v[2], 1); }                          \
-  void APIENTRY Vertex4##s(T x, T y, T z, T w) { VertexValues(x, y, z, w); }                              \
-  void APIENTRY Vertex4##s##v(const T* v) { VertexValues(v[0], v[1], v[2], v[3]); }
+  void APIENTRY Vertex2##s(T x, T y) { VertexValues(x, y, 0, 1, 2); }                                     \
+  void APIENTRY Vertex2##s##v(const T* v) { VertexValues(v[0], v[1], 0, 1, 2); }                         \
+  void APIENTRY Vertex3##s(T x, T y, T z) { VertexValues(x, y, z, 1, 3); }                                \
+  void APIENTRY Vertex3##s##v(const T* v) { VertexValues(v[0], v[1], v[2], 1, 3); }                       \
+  void APIENTRY Vertex4##s(T x, T y, T z, T w) { VertexValues(x, y, z, w, 4); }                           \
+  void APIENTRY Vertex4##s##v(const T* v) { VertexValues(v[0], v[1], v[2], v[3], 4); }
 FFC_VERTEX(GLshort, s)
 FFC_VERTEX(GLint, i)
 FFC_VERTEX(GLfloat, f)
