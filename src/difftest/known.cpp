@@ -72,6 +72,54 @@ bool call_list_then_wrap(const Stream& s, const SideResult& soft, size_t end_lis
   return compiling && called && (wrapped || open);
 }
 
+// The first call after which a display list holds a primitive with attributes but no vertex: a
+// compiled glBegin/glEnd with glNormal, glColor, glTexCoord or glArrayElement and no glVertex (nor a
+// vertex array for the elements), or a compiled glDrawArrays / glDrawElements with the vertex array
+// off and the normal or colour array on; -1 if none. Which client-state calls took effect is read
+// from soft's errors.
+int vertexless_list_primitive(const Stream& s, const SideResult& soft) {
+  bool compiling = false, open = false, vertex_array = false, normal_array = false, color_array = false;
+  bool attribute = false, vertex = false;
+  auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
+  for (size_t i = 0; i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok) {
+      const GLenum a = GLenum(s[i].args[0].num);
+      const bool on = n == "glEnableClientState";
+      if (a == GL_VERTEX_ARRAY) vertex_array = on;
+      if (a == GL_NORMAL_ARRAY) normal_array = on;
+      if (a == GL_COLOR_ARRAY) color_array = on;
+    }
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = false;
+    if (n == "glEndList") compiling = false;
+    if (!compiling) continue;
+    const bool element_attributes = normal_array || color_array;
+    if (n == "glBegin") open = true, attribute = vertex = false;
+    else if (n == "glEnd" && open) {
+      open = false;
+      if (attribute && !vertex) return int(i);
+    } else if (open && starts(n, "glVertex")) vertex = true;
+    else if (open && n == "glArrayElement") attribute |= element_attributes, vertex |= vertex_array;
+    else if (open && (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord"))) attribute = true;
+    else if (!open && (n == "glDrawArrays" || n == "glDrawElements") && !vertex_array && element_attributes &&
+             s[i].args[n == "glDrawArrays" ? 2 : 1].num > 0)
+      return int(i);
+  }
+  return -1;
+}
+
+// Whether call i is made while a list compiles (a glNewList soft took, its glEndList not yet).
+bool compiling_at(const Stream& s, const SideResult& soft, size_t i) {
+  bool compiling = false;
+  for (size_t k = 0; k < i && k < s.size(); ++k) {
+    const std::string& n = name_of(s[k]);
+    if (n == "glNewList" && k < soft.errors.size() && soft.errors[k] == GL_NO_ERROR) compiling = true;
+    if (n == "glEndList") compiling = false;
+  }
+  return compiling;
+}
+
 // A deviation soft reported while drawing, which can only change what was drawn.
 // A deviation soft names when it draws: it explains what drawing shows (pictures, feedback and
 // the count glRenderMode returns) in a stream where soft named it.
@@ -200,6 +248,29 @@ const std::vector<KnownDeviation>& known_deviations() {
        },
        true},
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
+      // Row 55: its vertex list has no vertex, and running the list (GL_COMPILE_AND_EXECUTE or
+      // glCallList) copies its attribute slots, never written, to the current values: garbage
+      // such as 9.78e35 or -3.7e10 (measured), so only those values are explained.
+      {"mesa-list-primitive-without-vertex",
+       "a display list's primitive with attributes but no vertex: Mesa sets the current normal, colour and "
+       "texture coordinates from memory it never wrote when the list runs; soft from the attributes sent",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         if (m.kind != "state" || m.key.find("GL_CURRENT_") == std::string::npos) return false;
+         const int at = vertexless_list_primitive(s, soft);
+         return at >= 0 && m.call > at;
+       }},
+      // Row 54: the call's own error (Mesa compiles it and checks when the list runs) and pictures.
+      {"soft-drawpixels-in-list-not-compiled",
+       "glDrawPixels while a list compiles: Mesa compiles it, soft executes it at once and records nothing",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         bool any = false;
+         for (size_t i = 0; i < s.size() && !any; ++i)
+           any = name_of(s[i]) == "glDrawPixels" && compiling_at(s, soft, i);
+         if (!any) return false;
+         if (m.kind == "pixels" || m.kind == "readpixels") return true;
+         return m.kind == "error" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glDrawPixels" &&
+                compiling_at(s, soft, size_t(m.call));
+       }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56

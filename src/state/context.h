@@ -253,7 +253,8 @@ class Context {
     if (error_ == GL_NO_ERROR) error_ = e;
   }
   bool outside_begin_end();
-  bool query_allowed();  // a query's check: as above, but answered while a list compiles
+  bool query_allowed();  // a query's check (outside_begin_end_keeping_vertices)
+  bool outside_begin_end_or_compiling();  // outside_begin_end, but taken while a list compiles
   bool outside_begin_end_keeping_vertices();  // records INVALID_OPERATION inside glBegin/glEnd, flushes nothing  // records INVALID_OPERATION inside glBegin/glEnd
   void set_enabled(GLenum cap, bool on);
   void set_client_state(GLenum array, bool on);
