@@ -45,29 +45,38 @@ bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& me
   });
 }
 
-// Whether the glEndList at `end_list` closes a list that compiled a glCallList(s) and then met
-// what makes Mesa copy or flush its list's vertex store: the call itself inside the list's open
-// glBegin, a glBegin still open at the glEndList, or an attribute first sent after a vertex of a
-// later primitive (a wrap). Measured: each crashes Mesa at the glEndList, in both list modes, for
-// any list name (0 and names never defined too); none of them without the glCallList. Which calls
-// took effect is read from soft's errors (Mesa's side crashed): a glNewList soft refused opened
-// nothing.
-bool call_list_then_wrap(const Stream& s, const SideResult& soft, size_t end_list) {
+// Whether the glEndList at `end_list` closes a list that compiled a glCallList(s) and also met what
+// makes Mesa copy or flush vertices of its list's vertex store: the call itself inside the list's
+// open glBegin, a glBegin still open at the glEndList, or a wrap that keeps vertices (an attribute
+// first sent after a vertex, with an unfinished primitive: one vertex of a triangle, any of a
+// strip, fan, loop or polygon), before or after the call. Measured: each crashes Mesa at the
+// glEndList, in both list modes, for any list name (0 and names never defined too); a wrap after a
+// whole triangle does not, nor any of them without the glCallList. Which calls took effect is read
+// from soft's errors (Mesa's side crashed): a glNewList soft refused opened nothing.
+bool call_list_and_wrap(const Stream& s, const SideResult& soft, size_t end_list) {
   bool compiling = false, open = false, called = false, wrapped = false;
-  int vertices = 0;
+  int vertices = 0, seen = 0;  // in the open primitive: its vertices, the attributes sent (bits)
+  GLenum mode = 0;
   auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
   for (size_t i = 0; i < end_list && i < s.size(); ++i) {
     const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
     const std::string& n = name_of(s[i]);
     if (n == "glNewList" && ok && !compiling) compiling = true, open = called = wrapped = false;
     if (!compiling) continue;
-    if (n == "glBegin") open = true, vertices = 0;
+    const int attribute = starts(n, "glNormal3") ? 1 : starts(n, "glColor") ? 2 : starts(n, "glTexCoord") ? 4
+                          : starts(n, "glEdgeFlag") ? 8 : 0;
+    if (n == "glBegin") open = true, vertices = seen = 0, mode = GLenum(s[i].args[0].num);
     else if (n == "glEnd") open = false;
     else if (n == "glCallList" || n == "glCallLists") called = true, wrapped |= open;
-    else if (starts(n, "glVertex") || n == "glArrayElement") ++vertices;
-    else if (called && open && vertices > 0 &&
-             (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord") || starts(n, "glEdgeFlag")))
-      wrapped = true;
+    else if (open && (starts(n, "glVertex") || n == "glArrayElement")) ++vertices;
+    else if (open && attribute) {
+      if (vertices > 0 && !(seen & attribute)) {
+        const int unfinished = mode == GL_LINES ? vertices % 2 : mode == GL_TRIANGLES ? vertices % 3
+                               : mode == GL_QUADS ? vertices % 4 : mode == GL_POINTS ? 0 : 1;
+        wrapped |= unfinished > 0;
+      }
+      seen |= attribute;
+    }
   }
   return compiling && called && (wrapped || open);
 }
@@ -238,13 +247,13 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kDrawPixelsFormat) !=
                             soft.deviations.end();
        }},
-      // Row 55: see call_list_then_wrap.
+      // Row 55: see call_list_and_wrap.
       {"mesa-list-call-then-wrap-crash",
-       "Mesa 22.3 segfaults in glEndList when a list compiled a glCallList or glCallLists and then its vertex "
-       "store wraps or flushes inside a glBegin of the list (GL: compiled like any other call); soft compiles it",
+       "Mesa 22.3 segfaults in glEndList when a list compiled a glCallList or glCallLists and its vertex store "
+       "wraps keeping vertices, or flushes inside a glBegin of the list (GL: compiled like any other call); soft compiles it",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          if (m.kind != "crash" || m.key != "crash mesa glEndList" || m.call < 0) return false;
-         return call_list_then_wrap(s, soft, size_t(m.call));
+         return call_list_and_wrap(s, soft, size_t(m.call));
        },
        true},
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
