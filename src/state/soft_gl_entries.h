@@ -9,6 +9,7 @@
 
 #include "state/context.h"
 #include "state/display_list.h"
+#include "state/gl_rules.h"
 
 namespace ffc::state::entry {
 
@@ -66,11 +67,22 @@ bool compiled_only(const A&... a) {
     c->run_held_back();
     return false;
   }
+  if constexpr (same_entry<Fn, &Begin>()) {
+    // A bad mode is a compile error (raised at once in GL_COMPILE_AND_EXECUTE), nothing opened:
+    // measured, glBegin(GL_CONSTANT_ATTENUATION) while compiling.
+    if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
+  }
   if constexpr (K == ListKind::Vertex) {
     if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...);
     if constexpr (same_entry<Fn, &End>()) {
-      // A glEnd without its glBegin in the list: Mesa records it and executes nothing now.
-      if (!ls.open) return l->record<Fn>(a...), true;
+      // A glEnd without its glBegin in the list: Mesa records it, and in GL_COMPILE_AND_EXECUTE
+      // executes it now as a state call (measured: GL_INVALID_OPERATION after a refused glBegin).
+      if (!ls.open) {
+        l->record<Fn>(a...);
+        if (!c->list_executes()) return true;
+        c->run_held_back();
+        return false;
+      }
       ls.open = false;
     }
   }
