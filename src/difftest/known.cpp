@@ -262,9 +262,16 @@ const std::vector<KnownDeviation>& known_deviations() {
       // such as 9.78e35 or -3.7e10 (measured), so only those values are explained.
       {"mesa-list-primitive-without-vertex",
        "a display list's primitive with attributes but no vertex: Mesa sets the current normal, colour and "
-       "texture coordinates from memory it never wrote when the list runs; soft from the attributes sent",
+       "texture coordinates (and a tracked material) from memory it never wrote when the list runs; soft from the "
+       "attributes sent",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         if (m.kind != "state" || m.key.find("GL_CURRENT_") == std::string::npos) return false;
+         // The current values, and the material where colour material tracks the colour.
+         const bool current = m.key.find("GL_CURRENT_") != std::string::npos;
+         const bool material = m.key.find("glGetMaterialfv") != std::string::npos &&
+                               any_call(s, m.call, [](const Call& c, size_t) {
+                                 return is(c, "glEnable") && GLenum(c.args[0].num) == GL_COLOR_MATERIAL;
+                               });
+         if (m.kind != "state" || !(current || material)) return false;
          const int at = vertexless_list_primitive(s, soft);
          return at >= 0 && m.call > at;
        }},
