@@ -39,6 +39,7 @@ nlohmann::json to_json(const difftest::Summary& s, const difftest::FuzzOptions& 
   return {{"seed", o.seed},
           {"streams", s.streams},
           {"calls", s.calls},
+          {"unexplained_streams", s.unexplained_streams},
           {"seconds", s.seconds},
           {"streams_per_minute", s.seconds > 0 ? s.streams * 60.0 / s.seconds : 0.0},
           {"categories", cats},
@@ -119,7 +120,8 @@ void add_fuzz(CLI::App& app) {
     } else {
       std::printf("%d streams, %d calls in %.1f s (%.0f streams a minute)\n", s.streams, s.calls, s.seconds,
                   s.seconds > 0 ? s.streams * 60 / s.seconds : 0.0);
-      std::printf("crashes %d, hangs %d\n", s.crashes, s.hangs);
+      std::printf("crashes %d, hangs %d; streams with an unexplained mismatch %d\n", s.crashes, s.hangs,
+                  s.unexplained_streams);
       for (const auto& [name, n] : s.known_by_name) std::printf("known deviation %-34s %d streams\n", name.c_str(), n);
       for (const auto& [kind, n] : s.mismatches_by_kind) std::printf("mismatch %-12s %d streams\n", kind.c_str(), n);
       for (const auto& f : s.findings) {

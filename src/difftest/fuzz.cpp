@@ -65,6 +65,15 @@ void record(Summary& sum, const Stream& s, uint64_t seed, const Checked& c, cons
   std::set<std::string> kinds, names;
   for (const auto& [m, name] : c.explained) names.insert(name);
   for (const auto& n : names) ++sum.known_by_name[n];
+  if (!c.unexplained.empty()) {
+    ++sum.unexplained_streams;
+    // One line per such stream (its index in the run, its seed, its first mismatch), for triage:
+    // the findings below keep only the first stream of each key.
+    if (log)
+      log("unexplained: stream " + std::to_string(sum.streams - 1) + " seed " + std::to_string(seed) + ": " +
+          std::to_string(c.unexplained.size()) + " mismatches, first " + c.unexplained.front().key + " (" +
+          c.unexplained.front().detail + ")");
+  }
   for (const Mismatch& m : c.unexplained) {
     if (kinds.insert(m.kind).second) ++sum.mismatches_by_kind[m.kind];
     Finding* f = nullptr;

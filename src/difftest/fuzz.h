@@ -31,6 +31,7 @@ struct Finding {
 
 struct Summary {
   int streams = 0, calls = 0;
+  int unexplained_streams = 0;  // streams with at least one mismatch no known deviation explains
   double seconds = 0;
   std::map<std::string, int> mismatches_by_kind;  // unexplained, a stream counted once per kind
   std::map<std::string, int> known_by_name;       // streams explained by each known deviation

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "state/context.h"
+#include "state/display_list.h"
 
 namespace ffc::difftest {
 
@@ -42,6 +43,90 @@ bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& me
     return call_matches(c) && i < mesa.errors.size() && mesa.errors[i] != GL_NO_ERROR &&
            !(m.kind == "error" && int(i) == m.call);
   });
+}
+
+// Whether the glEndList at `end_list` closes a list that compiled a glCallList(s) and also met what
+// makes Mesa copy or flush vertices of its list's vertex store: the call itself inside the list's
+// open glBegin, a glBegin still open at the glEndList, or a wrap that keeps vertices (an attribute
+// first sent after a vertex, with an unfinished primitive: one vertex of a triangle, any of a
+// strip, fan, loop or polygon), before or after the call. Measured: each crashes Mesa at the
+// glEndList, in both list modes, for any list name (0 and names never defined too); a wrap after a
+// whole triangle does not, nor any of them without the glCallList. Which calls took effect is read
+// from soft's errors (Mesa's side crashed): a glNewList soft refused opened nothing.
+bool call_list_and_wrap(const Stream& s, const SideResult& soft, size_t end_list) {
+  bool compiling = false, open = false, called = false, wrapped = false;
+  int vertices = 0, seen = 0;  // in the open primitive: its vertices, the attributes sent (bits)
+  GLenum mode = 0;
+  auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
+  for (size_t i = 0; i < end_list && i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = called = wrapped = false;
+    if (!compiling) continue;
+    const int attribute = starts(n, "glNormal3") ? 1 : starts(n, "glColor") ? 2 : starts(n, "glTexCoord") ? 4
+                          : starts(n, "glEdgeFlag") ? 8 : 0;
+    if (n == "glBegin") open = true, vertices = seen = 0, mode = GLenum(s[i].args[0].num);
+    else if (n == "glEnd") open = false;
+    else if (n == "glCallList" || n == "glCallLists") called = true, wrapped |= open;
+    else if (open && (starts(n, "glVertex") || n == "glArrayElement")) ++vertices;
+    else if (open && attribute) {
+      if (vertices > 0 && !(seen & attribute)) {
+        const int unfinished = mode == GL_LINES ? vertices % 2 : mode == GL_TRIANGLES ? vertices % 3
+                               : mode == GL_QUADS ? vertices % 4 : mode == GL_POINTS ? 0 : 1;
+        wrapped |= unfinished > 0;
+      }
+      seen |= attribute;
+    }
+  }
+  return compiling && called && (wrapped || open);
+}
+
+// The first call after which a display list holds a primitive with attributes but no vertex: a
+// compiled glBegin/glEnd with glNormal, glColor, glTexCoord or glArrayElement and no glVertex (nor a
+// vertex array for the elements), or a compiled glDrawArrays / glDrawElements with the vertex array
+// off and the normal or colour array on; -1 if none. Which client-state calls took effect is read
+// from soft's errors.
+int vertexless_list_primitive(const Stream& s, const SideResult& soft) {
+  bool compiling = false, open = false, vertex_array = false, normal_array = false, color_array = false;
+  bool attribute = false, vertex = false;
+  auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
+  for (size_t i = 0; i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok) {
+      const GLenum a = GLenum(s[i].args[0].num);
+      const bool on = n == "glEnableClientState";
+      if (a == GL_VERTEX_ARRAY) vertex_array = on;
+      if (a == GL_NORMAL_ARRAY) normal_array = on;
+      if (a == GL_COLOR_ARRAY) color_array = on;
+    }
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = false;
+    if (n == "glEndList") compiling = false;
+    if (!compiling) continue;
+    const bool element_attributes = normal_array || color_array;
+    if (n == "glBegin") open = true, attribute = vertex = false;
+    else if (n == "glEnd" && open) {
+      open = false;
+      if (attribute && !vertex) return int(i);
+    } else if (open && starts(n, "glVertex")) vertex = true;
+    else if (open && n == "glArrayElement") attribute |= element_attributes, vertex |= vertex_array;
+    else if (open && (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord"))) attribute = true;
+    else if (!open && (n == "glDrawArrays" || n == "glDrawElements") && !vertex_array && element_attributes &&
+             s[i].args[n == "glDrawArrays" ? 2 : 1].num > 0)
+      return int(i);
+  }
+  return -1;
+}
+
+// Whether call i is made while a list compiles (a glNewList soft took, its glEndList not yet).
+bool compiling_at(const Stream& s, const SideResult& soft, size_t i) {
+  bool compiling = false;
+  for (size_t k = 0; k < i && k < s.size(); ++k) {
+    const std::string& n = name_of(s[k]);
+    if (n == "glNewList" && k < soft.errors.size() && soft.errors[k] == GL_NO_ERROR) compiling = true;
+    if (n == "glEndList") compiling = false;
+  }
+  return compiling;
 }
 
 // A deviation soft reported while drawing, which can only change what was drawn.
@@ -164,6 +249,46 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kDrawPixelsFormat) !=
                             soft.deviations.end();
        }},
+      // Row 55: see call_list_and_wrap.
+      {"mesa-list-call-then-wrap-crash",
+       "Mesa 22.3 segfaults in glEndList when a list compiled a glCallList or glCallLists and its vertex store "
+       "wraps keeping vertices, or flushes inside a glBegin of the list (GL: compiled like any other call); soft compiles it",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         if (m.kind != "crash" || m.key != "crash mesa glEndList" || m.call < 0) return false;
+         return call_list_and_wrap(s, soft, size_t(m.call));
+       },
+       true},
+      drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
+      // Row 55: its vertex list has no vertex, and running the list (GL_COMPILE_AND_EXECUTE or
+      // glCallList) copies its attribute slots, never written, to the current values: garbage
+      // such as 9.78e35 or -3.7e10 (measured), so only those values are explained.
+      {"mesa-list-primitive-without-vertex",
+       "a display list's primitive with attributes but no vertex: Mesa sets the current normal, colour and "
+       "texture coordinates (and a tracked material) from memory it never wrote when the list runs; soft from the "
+       "attributes sent",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         // The current values, and the material where colour material tracks the colour.
+         const bool current = m.key.find("GL_CURRENT_") != std::string::npos;
+         const bool material = m.key.find("glGetMaterialfv") != std::string::npos &&
+                               any_call(s, m.call, [](const Call& c, size_t) {
+                                 return is(c, "glEnable") && GLenum(c.args[0].num) == GL_COLOR_MATERIAL;
+                               });
+         if (m.kind != "state" || !(current || material)) return false;
+         const int at = vertexless_list_primitive(s, soft);
+         return at >= 0 && m.call > at;
+       }},
+      // Row 54: the call's own error (Mesa compiles it and checks when the list runs) and pictures.
+      {"soft-drawpixels-in-list-not-compiled",
+       "glDrawPixels while a list compiles: Mesa compiles it, soft executes it at once and records nothing",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         bool any = false;
+         for (size_t i = 0; i < s.size() && !any; ++i)
+           any = name_of(s[i]) == "glDrawPixels" && compiling_at(s, soft, i);
+         if (!any) return false;
+         if (m.kind == "pixels" || m.kind == "readpixels") return true;
+         return m.kind == "error" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glDrawPixels" &&
+                compiling_at(s, soft, size_t(m.call));
+       }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56
@@ -173,9 +298,10 @@ const std::vector<KnownDeviation>& known_deviations() {
 }
 
 const KnownDeviation* explain(const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
-  if (m.kind == "crash" || m.kind == "hang") return nullptr;  // never explained away
+  if (m.kind == "hang") return nullptr;  // never explained away
+  const bool crash = m.kind == "crash";
   for (const KnownDeviation& d : known_deviations())
-    if (d.explains(s, m, mesa, soft)) return &d;
+    if ((!crash || d.mesa_crash) && d.explains(s, m, mesa, soft)) return &d;
   return nullptr;
 }
 

@@ -14,6 +14,9 @@ struct KnownDeviation {
   std::string name;         // short, stable: what --json counts under
   std::string description;  // one line: what Mesa does and what the spec says
   std::function<bool(const Stream&, const Mismatch&, const SideResult& mesa, const SideResult& soft)> explains;
+  // Whether it may explain a crash: only a Mesa crash pinned to the exact calls that cause it (a
+  // hang is never explained, nor any crash of soft's).
+  bool mesa_crash = false;
 };
 
 const std::vector<KnownDeviation>& known_deviations();

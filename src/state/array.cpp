@@ -71,10 +71,10 @@ void Context::ArrayElement(GLint i) {
     vertex_array_.enabled = false;
     fetch_vertex(i, element_fixed());
     vertex_array_.enabled = vertex;
-    if (vertex) stray_vertex();
+    if (vertex) position_size(vertex_array_.size), stray_vertex();
     return;
   }
-  if (vertex_array_.enabled) format_has_position_ = !spec_;
+  if (vertex_array_.enabled) position_size(vertex_array_.size), format_has_position_ = !spec_;
   fetch_vertex(i, element_fixed());
 }
 

@@ -46,10 +46,18 @@ void Context::flush_vertices() {
 // vertices and vertex format through them (measured one call at a time: only glGetMaterial among
 // the queries flushes). The current colour and normal are copied out first (FLUSH_CURRENT), see
 // get_values.
+//
+// While a list compiles Mesa runs the calls that are not compiled through its compiling dispatch,
+// which has no such check, so a GL_COMPILE_AND_EXECUTE list's wrapped primitive (display_list.cpp)
+// leaves them taken (measured: glGet*, glGetLight, glGetMaterial, client state, glPixelStore,
+// glFeedbackBuffer, glSelectBuffer, glReadPixels); glIsEnabled, glRenderMode and glGetError check
+// for themselves.
 bool Context::outside_begin_end_keeping_vertices() {
-  if (in_begin_) error(GL_INVALID_OPERATION);
-  return !in_begin_;
+  if (in_begin_ && lists_.mode == 0) error(GL_INVALID_OPERATION);
+  return !in_begin_ || lists_.mode != 0;
 }
+bool Context::query_allowed() { return outside_begin_end_keeping_vertices(); }
+bool Context::outside_begin_end_or_compiling() { return (in_begin_ && lists_.mode != 0) || outside_begin_end(); }
 
 pool::Workers& Context::workers() {
   if (!workers_) workers_ = std::make_unique<pool::Workers>(threads_);

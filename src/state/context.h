@@ -129,9 +129,10 @@ class Context {
     uint32_t key[12];
     uint32_t id, generation, pad[2];
   };
-  bool store_vertex(float x, float y, float z, float w) {
-    if (!store_corners_ || lists_.mode != 0) return false;
-    format_has_position_ = true;
+  // Only once the format holds a position at least `size` wide: a position growing mid-primitive
+  // wraps Mesa's vbo (position_size), which the full call does.
+  bool store_vertex(float x, float y, float z, float w, int size) {
+    if (!store_corners_ || lists_.mode != 0 || !format_has_position_ || size > position_size_) return false;
     keep_list_vertex(x, y, z, w);
     return true;
   }
@@ -193,7 +194,7 @@ class Context {
 
   void Begin(GLenum mode);
   void End();
-  void Vertex(double x, double y, double z, double w);
+  void Vertex(double x, double y, double z, double w, int size = 0);  // size: components sent (0: not known)
   void Normal(double x, double y, double z);
   void Color(double r, double g, double b, double a, int components = 4);  // glColor3*: 3
   void VertexPointer(GLint size, GLenum type, GLsizei stride, const void* p);
@@ -279,6 +280,8 @@ class Context {
     if (error_ == GL_NO_ERROR) error_ = e;
   }
   bool outside_begin_end();
+  bool query_allowed();  // a query's check (outside_begin_end_keeping_vertices)
+  bool outside_begin_end_or_compiling();  // outside_begin_end, but taken while a list compiles
   bool outside_begin_end_keeping_vertices();  // records INVALID_OPERATION inside glBegin/glEnd, flushes nothing  // records INVALID_OPERATION inside glBegin/glEnd
   void set_enabled(GLenum cap, bool on);
   void set_client_state(GLenum array, bool on);
@@ -368,7 +371,8 @@ class Context {
   void draw_arrays(GLenum mode, GLint first, GLsizei count);
   void draw_elements(GLenum mode, GLsizei count, GLenum type, const void* indices);
   void set_color_varies(bool v);
-  void vbo_wrap(bool alpha_one);  // immediate.cpp: an attribute joins Mesa's vbo format mid-primitive
+  void vbo_wrap(bool alpha_one);
+  void position_size(int size);  // immediate.cpp: a position's components join Mesa's vbo format  // immediate.cpp: an attribute joins Mesa's vbo format mid-primitive
   bool cm_per_vertex() const { return color_material_ && (spec_ || color_varies_); }
   void flush_primitive();  // primitive.cpp, through its Assembly
   friend class Assembly;
@@ -458,6 +462,7 @@ class Context {
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
   bool vertices_kept_ = false;  // Mesa's NeedFlush asks for a flush of stored vertices (after glBegin, or a FLUSH_CURRENT)
   bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
+  int position_size_ = 0;                 // and its size then (position_size)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1
   // section 2.8 leaves them indeterminate), though the elements go through glArrayElement's path.
   struct CurrentValues {

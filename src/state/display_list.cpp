@@ -57,11 +57,19 @@ void Context::run_held_back(bool new_format) {
 }
 
 // An attribute that first appears after a vertex of an open primitive grows Mesa's vertex format:
-// the vertices so far are drawn first (the primitive stays open on the executing side).
+// the list wraps the primitive, and in GL_COMPILE_AND_EXECUTE the vertices so far are drawn first
+// (the primitive stays open on the executing side). Measured: every mode draws as sent but a
+// triangle strip wrapped after an odd number of vertices (kListStripWrap) and a line loop (its
+// closing segment lost, as in immediate mode: kLineLoopWrap), in both list modes.
 void Context::hold_back(int kind) {
   if (kind < 0) return void(++lists_.vertices);
   if (kind == 0) return;
-  if (lists_.open && lists_.vertices > 0 && !(lists_.attributes & kind)) run_held_back(false);
+  if (lists_.open && lists_.vertices > 0 && !(lists_.attributes & kind)) {
+    if (lists_.open_mode == GL_TRIANGLE_STRIP && lists_.vertices % 2) deviations_.insert(kListStripWrap);
+    if (lists_.open_mode == GL_LINE_LOOP) deviations_.insert(kLineLoopWrap);
+    if (list_executes()) run_held_back(false);
+    lists_.vertices = 0;
+  }
   lists_.attributes |= kind;
 }
 
@@ -111,8 +119,16 @@ void Context::NewList(GLuint list, GLenum mode) {
 }
 
 void Context::EndList() {
-  if (!outside_begin_end()) return;
+  // In GL_COMPILE_AND_EXECUTE the executing side can be inside glBegin/glEnd only because the list's
+  // own primitive wrapped (hold_back): the vertices so far were drawn and the primitive left open.
+  // Measured against Mesa: inside the list's still open glBegin, glEndList is taken without an error
+  // and the executing side stays inside its primitive; after the list's glEnd (still held back), Mesa
+  // raises GL_INVALID_OPERATION but ends the list all the same, and the held-back calls close the
+  // primitive (repro list_wrap_end_list.txt).
+  const bool wrapped = in_begin_ && lists_.mode == GL_COMPILE_AND_EXECUTE;
+  if (!wrapped && !outside_begin_end()) return;
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
+  if (wrapped && !lists_.open) error(GL_INVALID_OPERATION);
   run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
@@ -188,7 +204,7 @@ void Context::ListBase(GLuint base) {
 
 int Context::list_values(GLenum pname, GLdouble* out) {
   switch (pname) {
-    case GL_LIST_INDEX: out[0] = lists_.index; return 1;
+    case GL_LIST_INDEX: out[0] = GLint(lists_.index); return 1;  // signed too (glNewList(-100, ...): -100)
     case GL_LIST_MODE: out[0] = lists_.mode; return 1;
     case GL_LIST_BASE: out[0] = GLint(lists_.base); return 1;  // Mesa reports it as a signed integer (glListBase(-100): -100)
     case GL_MAX_LIST_NESTING: out[0] = ListState::kMaxNesting; return 1;

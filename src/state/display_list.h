@@ -27,6 +27,12 @@
 
 namespace ffc::state {
 
+// Row 55 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListStripWrap =
+    "a display list's triangle strip whose vertex format grows (a glNormal, glColor ... first appearing) after an "
+    "odd number of its vertices: Mesa's list wraps the strip and draws other triangles around the wrap "
+    "(GL_COMPILE and GL_COMPILE_AND_EXECUTE alike); soft draws the strip as sent";
+
 // N floats (or doubles) by value: a pointer argument's contents, recorded.
 template <int N, typename T = GLfloat>
 struct Floats {
@@ -95,6 +101,7 @@ struct ListState {
   DisplayList compiling;
   DisplayList held_back;  // GL_COMPILE_AND_EXECUTE: vertex-stream calls recorded, not yet executed
   bool open = false;       // a glBegin compiled into the list, its glEnd not yet
+  GLenum open_mode = 0;    // that glBegin's mode
   int vertices = 0;        // held back since the open glBegin
   int attributes = 0;      // attributes in the held-back vertex format (bits: normal, colour, texture, edge)
   GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none

@@ -85,7 +85,7 @@ void Context::feedback_put(double x) {
 
 void Context::FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
   // Mesa's order (feedback.c): feedback mode, the size, a null buffer, then the type.
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_or_compiling()) return;
   if (render_mode_ == GL_FEEDBACK) return error(GL_INVALID_OPERATION);
   if (size < 0) return error(GL_INVALID_VALUE);
   if (!buffer && size > 0) return error(GL_INVALID_VALUE);

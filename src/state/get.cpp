@@ -35,7 +35,7 @@ GLint float_to_int(double x) {
 // from the value as Mesa stores it: a float, or a double for the depth clear value.
 int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
   normalized = kRound;
-  if (!outside_begin_end_keeping_vertices()) return 0;
+  if (!query_allowed()) return 0;
   int n = 0;
   auto vec4 = [&](const glm::dvec4& c, bool color) {
     for (int k = 0; k < 4; ++k) out[k] = c[k];

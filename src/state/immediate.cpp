@@ -118,7 +118,20 @@ void Context::vbo_wrap(bool alpha_one) {
   else std::copy(kept.begin(), kept.end(), verts_.end() - std::ptrdiff_t(keep));
 }
 
-void Context::Vertex(double x, double y, double z, double w) {
+// A position growing inside glBegin/glEnd (glVertex2 then glVertex3 or 4, 3 then 4, from calls or
+// glArrayElement) wraps Mesa's vbo as a colour growing does (measured: an unfilled polygon fed back
+// with a second reset token, repro position_grows_in_polygon.txt); the format keeps the size with
+// the position until it is reset. Size 0: not known, nothing tracked.
+void Context::position_size(int size) {
+  if (spec_ || size == 0) return;
+  const int had = format_has_position_ ? position_size_ : 0;
+  if (size <= had) return;
+  if (in_begin_ && had > 0) vbo_wrap(false);
+  position_size_ = size;
+}
+
+void Context::Vertex(double x, double y, double z, double w, int size) {
+  position_size(size);
   if (!in_begin_) return stray_vertex();  // outside glBegin/glEnd a vertex draws nothing (undefined in GL)
   format_has_position_ = !spec_;
   if (sink_draws()) return sink_vertex({x, y, z, w});  // drawn at glEnd (draw_sink.cpp)

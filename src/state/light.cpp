@@ -264,7 +264,7 @@ void Context::flush_stored() {
   format_has_position_ = false;
 }
 void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
-  if (!outside_begin_end_keeping_vertices()) return;
+  if (!query_allowed()) return;
   const int i = light_index(light), n = light_param_count(pname);
   if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
   const lighting::LightParams& l = lights_[i];
@@ -285,8 +285,9 @@ void Context::GetLightfv(GLenum light, GLenum pname, GLfloat* out) {
 }
 
 void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
-  if (!outside_begin_end()) return;  // FLUSH_VERTICES
-  flush_current();  // then FLUSH_CURRENT: copied, kept in the format until the next flush of stored vertices
+  if (in_begin_ && !query_allowed()) return;  // inside a list's wrapped primitive: answered, nothing flushed
+  // FLUSH_VERTICES, then FLUSH_CURRENT: copied, kept in the format until the next flush of stored vertices
+  if (!in_begin_) outside_begin_end(), flush_current();
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
   const lighting::MaterialParams& m = materials_[face == GL_BACK];
   glm::dvec4 v;

@@ -319,7 +319,7 @@ void Context::PixelStorei(GLenum pname, GLint param) {
 }
 
 void Context::ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_or_compiling()) return;
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);  // Mesa checks the size before the format
   if (const GLenum e = read_pixels_error(format, type)) return error(e);

@@ -35,7 +35,7 @@ void Context::write_hit() {
 }
 
 void Context::SelectBuffer(GLsizei size, GLuint* buffer) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_or_compiling()) return;
   if (size < 0) return error(GL_INVALID_VALUE);
   if (render_mode_ == GL_SELECT) return error(GL_INVALID_OPERATION);
   select_.buffer = buffer, select_.size = size, select_.count = 0;

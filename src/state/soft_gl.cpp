@@ -19,8 +19,9 @@ void APIENTRY ArrayElement(GLint i) {
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     if (i >= 0) c->compile_element(*l, i);
-    if (c->list_executes() && i >= 0) c->compile_element(c->list_held_back(), i);  // held back
-    return;
+    if (!c->list_executes() || i < 0) return;
+    if (c->list_state().open) return c->compile_element(c->list_held_back(), i);  // held back
+    c->run_held_back();  // outside the list's glBegin: executed at once (soft_gl_entries.h)
   }
   c->ArrayElement(i);
 }

@@ -9,6 +9,7 @@
 
 #include "state/context.h"
 #include "state/display_list.h"
+#include "state/gl_rules.h"
 
 namespace ffc::state::entry {
 
@@ -16,7 +17,7 @@ namespace ffc::state::entry {
 #include "gl/gl_functions.inc"
 #undef FFC_GL_FUNCTION
 // The by-value calls the immediate-mode variants end in (soft_gl_immediate.cpp).
-void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w, GLint size);  // size: 2, 3 or 4 components
 void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z);
 void APIENTRY ColorValues(GLdouble r, GLdouble g, GLdouble b, GLdouble a, GLint components);
 void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q);
@@ -55,16 +56,37 @@ bool compiled_only(const A&... a) {
     c->record_list_error(GL_INVALID_OPERATION);
     return true;
   }
+  // Outside the list's own glBegin/glEnd a vertex-stream call other than glBegin and glEnd compiles
+  // as a state call does (Mesa swaps its vertex format out there: "compiled as opcodes"), so in
+  // GL_COMPILE_AND_EXECUTE it flushes what was held back and executes at once (measured: glNormal3d
+  // then glGet of GL_CURRENT_NORMAL; repro list_attribute_outside_begin.txt).
+  constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
+  if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
+    l->record<Fn>(a...);
+    if (!c->list_executes()) return true;
+    c->run_held_back();
+    return false;
+  }
+  if constexpr (same_entry<Fn, &Begin>()) {
+    // A bad mode is a compile error (raised at once in GL_COMPILE_AND_EXECUTE), nothing opened:
+    // measured, glBegin(GL_CONSTANT_ATTENUATION) while compiling.
+    if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
+  }
   if constexpr (K == ListKind::Vertex) {
-    if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0;
+    if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...);
     if constexpr (same_entry<Fn, &End>()) {
-      // A glEnd without its glBegin in the list: Mesa records it and executes nothing now.
-      if (!ls.open) return l->record<Fn>(a...), true;
+      // A glEnd without its glBegin in the list: Mesa records it, and in GL_COMPILE_AND_EXECUTE
+      // executes it now as a state call (measured: GL_INVALID_OPERATION after a refused glBegin).
+      if (!ls.open) {
+        l->record<Fn>(a...);
+        if (!c->list_executes()) return true;
+        c->run_held_back();
+        return false;
+      }
       ls.open = false;
     }
   }
   l->record<Fn>(a...);
-  if (!c->list_executes()) return true;
   if constexpr (K == ListKind::Vertex) {
     int kind = 0;  // what enters Mesa's vertex format: a vertex (-1), an attribute (a bit), or neither
     if constexpr (same_entry<Fn, &VertexValues>()) kind = -1;
@@ -72,10 +94,11 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &ColorValues>()) kind = 2;
     if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
-    c->hold_back(kind);
-    c->list_held_back().record<Fn>(a...);
+    c->hold_back(kind);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
+    if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     return true;
   }
+  if (!c->list_executes()) return true;
   if constexpr (K == ListKind::State) c->run_held_back();
   return false;
 }

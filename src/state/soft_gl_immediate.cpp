@@ -26,11 +26,12 @@ GLfloat unit(GLdouble c) { return GLfloat(c); }
 
 // The by-value calls that every variant ends in, and that lists record.
 // The first test is immediate mode's store (Context::store_vertex), which stands for the rest
-// inside a glBegin(GL_TRIANGLES) on the triangle list.
-void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w) {
-  if (Context* c = C(); c && c->store_vertex(float(x), float(y), float(z), float(w))) return;
-  LISTABLE_VERTEX(VertexValues, x, y, z, w);
-  if (Context* c = C()) c->Vertex(x, y, z, w);
+// inside a glBegin(GL_TRIANGLES) on the triangle list. `size`: the components the call gave (the
+// vbo format grows with them: Context::position_size).
+void APIENTRY VertexValues(GLdouble x, GLdouble y, GLdouble z, GLdouble w, GLint size) {
+  if (Context* c = C(); c && c->store_vertex(float(x), float(y), float(z), float(w), size)) return;
+  LISTABLE_VERTEX(VertexValues, x, y, z, w, size);
+  if (Context* c = C()) c->Vertex(x, y, z, w, size);
 }
 void APIENTRY NormalValues(GLdouble x, GLdouble y, GLdouble z) {
   if (Context* c = C(); c && c->store_normal(x, y, z)) return;
@@ -51,32 +52,32 @@ void APIENTRY TexCoordValues(GLfloat s, GLfloat t, GLfloat r, GLfloat q) {
 
 // glVertex: positions convert directly; missing z is 0, missing w is 1.
 #define FFC_VERTEX(T, s)                                                                                   \
-  void APIENTRY Vertex2##s(T x, T y) { VertexValues(x, y, 0, 1); }                                        \
-  void APIENTRY Vertex2##s##v(const T* v) { VertexValues(v[0], v[1], 0, 1); }                            \
-  void APIENTRY Vertex3##s(T x, T y, T z) { VertexValues(x, y, z, 1); }                                   \
-  void APIENTRY Vertex3##s##v(const T* v) { VertexValues(v[0], v[1], v[2], 1); }                          \
-  void APIENTRY Vertex4##s(T x, T y, T z, T w) { VertexValues(x, y, z, w); }                              \
-  void APIENTRY Vertex4##s##v(const T* v) { VertexValues(v[0], v[1], v[2], v[3]); }
+  void APIENTRY Vertex2##s(T x, T y) { VertexValues(x, y, 0, 1, 2); }                                     \
+  void APIENTRY Vertex2##s##v(const T* v) { VertexValues(v[0], v[1], 0, 1, 2); }                         \
+  void APIENTRY Vertex3##s(T x, T y, T z) { VertexValues(x, y, z, 1, 3); }                                \
+  void APIENTRY Vertex3##s##v(const T* v) { VertexValues(v[0], v[1], v[2], 1, 3); }                       \
+  void APIENTRY Vertex4##s(T x, T y, T z, T w) { VertexValues(x, y, z, w, 4); }                           \
+  void APIENTRY Vertex4##s##v(const T* v) { VertexValues(v[0], v[1], v[2], v[3], 4); }
 FFC_VERTEX(GLshort, s)
 FFC_VERTEX(GLint, i)
 FFC_VERTEX(GLdouble, d)
 #undef FFC_VERTEX
 // The float forms try the store themselves: VertexValues' own test comes after a conversion to
 // double and a call.
-#define FFC_STORE_VERTEX(x, y, z, w) \
-  if (Context* c = C(); c && c->store_vertex(x, y, z, w)) return
-void APIENTRY Vertex2f(GLfloat x, GLfloat y) { VertexValues(x, y, 0, 1); }
-void APIENTRY Vertex2fv(const GLfloat* v) { VertexValues(v[0], v[1], 0, 1); }
+#define FFC_STORE_VERTEX(x, y, z, w, size) \
+  if (Context* c = C(); c && c->store_vertex(x, y, z, w, size)) return
+void APIENTRY Vertex2f(GLfloat x, GLfloat y) { VertexValues(x, y, 0, 1, 2); }
+void APIENTRY Vertex2fv(const GLfloat* v) { VertexValues(v[0], v[1], 0, 1, 2); }
 void APIENTRY Vertex3f(GLfloat x, GLfloat y, GLfloat z) {
-  FFC_STORE_VERTEX(x, y, z, 1);
-  VertexValues(x, y, z, 1);
+  FFC_STORE_VERTEX(x, y, z, 1, 3);
+  VertexValues(x, y, z, 1, 3);
 }
 void APIENTRY Vertex3fv(const GLfloat* v) {
-  FFC_STORE_VERTEX(v[0], v[1], v[2], 1);
-  VertexValues(v[0], v[1], v[2], 1);
+  FFC_STORE_VERTEX(v[0], v[1], v[2], 1, 3);
+  VertexValues(v[0], v[1], v[2], 1, 3);
 }
-void APIENTRY Vertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { VertexValues(x, y, z, w); }
-void APIENTRY Vertex4fv(const GLfloat* v) { VertexValues(v[0], v[1], v[2], v[3]); }
+void APIENTRY Vertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { VertexValues(x, y, z, w, 4); }
+void APIENTRY Vertex4fv(const GLfloat* v) { VertexValues(v[0], v[1], v[2], v[3], 4); }
 #undef FFC_STORE_VERTEX
 
 // glNormal3: integers onto [-1, 1].
