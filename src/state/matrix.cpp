@@ -117,18 +117,20 @@ void Context::Frustum(double l, double r, double b, double t, double n, double f
   stack_f().back().frustum(fl, fr, fb, ft, fn, ff);
 }
 
+// glViewport and glDepthRange flush stored vertices only on a change (Mesa's viewport.c compares
+// the clamped viewport, and the depth range as given with the clamped one it keeps).
 void Context::Viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   // Mesa clamps the size to GL_MAX_VIEWPORT_DIMS and the origin to its viewport bounds range
   // [-2 max, 2 max - 1] (viewport.c; GL 2.1 says only the size is clamped). Ours does the same:
   // window coordinates then stay far from the int range.
   x = std::clamp(x, -2 * kMaxViewport, 2 * kMaxViewport - 1), y = std::clamp(y, -2 * kMaxViewport, 2 * kMaxViewport - 1);
-  viewport_ = {x, y, std::min(w, kMaxViewport), std::min(h, kMaxViewport)};
+  assign(viewport_, decltype(viewport_){x, y, std::min(w, kMaxViewport), std::min(h, kMaxViewport)});
 }
 
 void Context::DepthRange(double n, double f) {
-  if (!outside_begin_end()) return;
-  depth_range_ = {clamp01(n), clamp01(f)};
+  if (!outside_begin_end_keeping_vertices()) return;
+  if (changes(!(depth_range_[0] == n && depth_range_[1] == f))) depth_range_ = {clamp01(n), clamp01(f)};
 }
 }  // namespace ffc::state
