@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstring>
+
 #include "state/context.h"
 #include "state/gl_rules.h"
 
@@ -40,14 +42,23 @@ void Context::LoadIdentity() {
   stack_f().back().load_identity();
 }
 
+// Mesa's glLoadMatrix compares the floats with the top's, bit for bit, and flushes stored vertices
+// only when they differ.
 void Context::LoadMatrix(const glm::dmat4& m) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
+  const glm::mat4 f(m);
+  changes(std::memcmp(&f, &stack_f().back().values(), sizeof f) != 0);
   stack().back() = m;
   stack_f().back().load(glm::mat4(m));
 }
 
+// Mesa's glMultMatrix returns first for a matrix whose floats are the identity's, bit for bit
+// (-0 is not 0): no flush of stored vertices, no multiply (measured: SetterFlush, Unchanged13).
 void Context::MultMatrix(const glm::dmat4& m) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
+  const glm::mat4 f(m), identity(1);
+  if (std::memcmp(&f, &identity, sizeof f) == 0) return;
+  flush_vertices();
   stack().back() = stack().back() * m;
   stack_f().back().multiply(glm::mat4(m));
 }

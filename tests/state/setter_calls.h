@@ -53,7 +53,16 @@ inline void setter_call(int which, bool other) {
       glDepthMask(other ? GL_FALSE : GL_TRUE);
       glColorMask(GL_TRUE, other ? GL_FALSE : GL_TRUE, GL_TRUE, GL_TRUE);
       break;
-    case 13: glHint(GL_FOG_HINT, other ? GL_NICEST : GL_DONT_CARE); break;
+    case 13: {
+      glHint(GL_FOG_HINT, other ? GL_NICEST : GL_DONT_CARE);
+      const GLfloat identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+      const GLfloat scaled[16] = {2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+      glMatrixMode(GL_TEXTURE);  // a matrix the draws do not read
+      glLoadMatrixf(other ? scaled : identity);
+      glMultMatrixf(identity);  // Mesa skips an identity (no flush)
+      glMatrixMode(GL_MODELVIEW);
+      break;
+    }
     case 14: glLightfv(GL_LIGHT0, GL_POSITION, other ? slanted : z_axis); break;
   }
 }
