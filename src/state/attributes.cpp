@@ -36,10 +36,11 @@ bool hint_target(GLenum t) {
 // Stored and reported, never acted on (GL lets an implementation ignore hints). Mesa checks the
 // mode before the target.
 void Context::Hint(GLenum target, GLenum mode) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return error(GL_INVALID_ENUM);
   if (!hint_target(target)) return error(GL_INVALID_ENUM);
-  hints_[target] = mode;
+  const auto it = hints_.find(target);  // Mesa's hint.c flushes only on a change
+  if (changes((it == hints_.end() ? GLenum(GL_DONT_CARE) : it->second) != mode)) hints_[target] = mode;
 }
 
 void Context::TexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* p) {

@@ -361,6 +361,12 @@ class Context {
   void flush_stored();
   void flush_stored_keeping_format();
   void flush_vertices();  // Mesa's FLUSH_VERTICES: a flush of stored vertices when one is asked for
+  // Mesa's setters compare first and run FLUSH_VERTICES only when the call changes the state
+  // (docs/fidelity.md): `changes` flushes when `differs`, `assign` sets a value that differs.
+  bool changes(bool differs) { return differs && (flush_vertices(), true); }
+  template <class T> void assign(T& field, const T& value) {
+    if (changes(!(field == value))) field = value;
+  }
   void stray_vertex();
   void begin_draw();
   void feedback_offset(const raster::WindowVertex* const* v, const raster::State& rs, float* z) const;

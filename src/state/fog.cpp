@@ -8,29 +8,33 @@
 
 namespace ffc::state {
 
+// Each parameter flushes stored vertices only when it changes (Mesa's fog.c); the fog colour is
+// compared clamped with the values given, as Mesa compares it, so an out-of-range colour always
+// flushes.
 void Context::Fogfv(GLenum pname, const GLfloat* params) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   switch (pname) {
     case GL_FOG_MODE: {
       const GLenum m = GLenum(GLint(params[0]));
       if (m != GL_LINEAR && m != GL_EXP && m != GL_EXP2) return error(GL_INVALID_ENUM);
-      fog_mode_ = m;
+      assign(fog_mode_, m);
       break;
     }
     case GL_FOG_DENSITY:
       if (params[0] < 0) return error(GL_INVALID_VALUE);
-      fog_density_ = params[0];
+      assign(fog_density_, params[0]);
       break;
-    case GL_FOG_START: fog_start_ = params[0]; break;
-    case GL_FOG_END: fog_end_ = params[0]; break;
-    case GL_FOG_INDEX: fog_index_ = params[0]; break;
+    case GL_FOG_START: assign(fog_start_, params[0]); break;
+    case GL_FOG_END: assign(fog_end_, params[0]); break;
+    case GL_FOG_INDEX: assign(fog_index_, params[0]); break;
     case GL_FOG_COLOR:
+      if (!changes(fog_color_ != glm::vec4(params[0], params[1], params[2], params[3]))) return;
       for (int k = 0; k < 4; ++k) fog_color_[k] = std::clamp(params[k], 0.0f, 1.0f);
       break;
     case GL_FOG_COORD_SRC: {
       const GLenum src = GLenum(GLint(params[0]));
       if (src != GL_FOG_COORD && src != GL_FRAGMENT_DEPTH) return error(GL_INVALID_ENUM);
-      fog_coord_src_ = src;
+      assign(fog_coord_src_, src);
       break;
     }
     default: return error(GL_INVALID_ENUM);
@@ -38,8 +42,8 @@ void Context::Fogfv(GLenum pname, const GLfloat* params) {
 }
 
 void Context::PolygonOffset(GLfloat factor, GLfloat units) {
-  if (!outside_begin_end()) return;
-  offset_factor_ = factor, offset_units_ = units;
+  if (!outside_begin_end_keeping_vertices()) return;
+  if (changes(offset_factor_ != factor || offset_units_ != units)) offset_factor_ = factor, offset_units_ = units;
 }
 
 int Context::fog_values(GLenum pname, GLdouble* out, int& normalized) {

@@ -34,51 +34,65 @@ bool valid_equation(GLenum e) {
 
 }  // namespace
 
+// Every setter here flushes stored vertices only when it changes the state (Context::changes), as
+// Mesa's blend.c, depth.c, lines.c and scissor.c do; the alpha reference and the blend colour are
+// compared as given, before clamping, as Mesa compares them.
 void Context::AlphaFunc(GLenum func, GLfloat ref) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (func < GL_NEVER || func > GL_ALWAYS) return error(GL_INVALID_ENUM);
+  if (!changes(frag_.alpha_func != func || !(frag_.alpha_ref_given == ref))) return;
   frag_.alpha_func = func;
-  frag_.alpha_ref = clamp01(ref);
+  frag_.alpha_ref = clamp01(ref), frag_.alpha_ref_given = ref;
 }
 
 void Context::BlendFuncSeparate(GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (!valid_factor(src_rgb) || !valid_factor(dst_rgb) || !valid_factor(src_alpha) || !valid_factor(dst_alpha))
     return error(GL_INVALID_ENUM);
+  if (!changes(frag_.src_rgb != src_rgb || frag_.dst_rgb != dst_rgb || frag_.src_alpha != src_alpha || frag_.dst_alpha != dst_alpha))
+    return;
   frag_.src_rgb = src_rgb, frag_.dst_rgb = dst_rgb, frag_.src_alpha = src_alpha, frag_.dst_alpha = dst_alpha;
 }
 
 void Context::BlendEquationSeparate(GLenum rgb, GLenum alpha) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (!valid_equation(rgb) || !valid_equation(alpha)) return error(GL_INVALID_ENUM);
+  if (!changes(frag_.eq_rgb != rgb || frag_.eq_alpha != alpha)) return;
   frag_.eq_rgb = rgb, frag_.eq_alpha = alpha;
 }
 
 void Context::BlendColor(float r, float g, float b, float a) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
+  const glm::vec4 given(r, g, b, a);
+  if (!changes(frag_.blend_color_given != given)) return;
+  frag_.blend_color_given = given;
   frag_.blend_color = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
 }
 
 void Context::ColorMask(bool r, bool g, bool b, bool a) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
+  const bool* m = frag_.color_mask;
+  if (!changes(m[0] != r || m[1] != g || m[2] != b || m[3] != a)) return;
   frag_.color_mask[0] = r, frag_.color_mask[1] = g, frag_.color_mask[2] = b, frag_.color_mask[3] = a;
 }
 
 void Context::DepthMask(bool on) {
-  if (!outside_begin_end()) return;
-  frag_.depth_mask = on;
+  if (!outside_begin_end_keeping_vertices()) return;
+  assign(frag_.depth_mask, on);
 }
 
 void Context::LineStipple(GLint factor, GLushort pattern) {
-  if (!outside_begin_end()) return;
-  frag_.stipple_factor = std::clamp(factor, 1, 256);
+  if (!outside_begin_end_keeping_vertices()) return;
+  factor = std::clamp(factor, 1, 256);
+  if (!changes(frag_.stipple_factor != factor || frag_.stipple_pattern != pattern)) return;
+  frag_.stipple_factor = factor;
   frag_.stipple_pattern = pattern;
 }
 
 void Context::Scissor(GLint x, GLint y, GLsizei w, GLsizei h) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
-  frag_.scissor_box = {x, y, w, h};
+  if (changes(scissor_box() != glm::ivec4(x, y, w, h))) frag_.scissor_box = {x, y, w, h};
 }
 
 glm::ivec4 Context::scissor_box() const {

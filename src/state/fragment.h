@@ -15,9 +15,11 @@ struct FragmentState {
   glm::ivec4 scissor_box{0, 0, -1, -1};
   GLenum alpha_func = GL_ALWAYS;
   float alpha_ref = 0;  // clamped to [0, 1], as Mesa keeps and reports it for a fixed-point buffer
+  float alpha_ref_given = 0;  // as given: Mesa compares a new reference with it (a change flushes)
   GLenum src_rgb = GL_ONE, dst_rgb = GL_ZERO, src_alpha = GL_ONE, dst_alpha = GL_ZERO;
   GLenum eq_rgb = GL_FUNC_ADD, eq_alpha = GL_FUNC_ADD;
   glm::vec4 blend_color{0};  // clamped to [0, 1], as the alpha reference
+  glm::vec4 blend_color_given{0};
   bool color_mask[4] = {true, true, true, true};
   bool depth_mask = true;
   // Line stipple (section 3.4.2), rasterization state kept here with the others of this helper.

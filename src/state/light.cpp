@@ -32,25 +32,27 @@ glm::dvec3 Context::direction_to_eye(const double* v) {
   return out;
 }
 
+// As Mesa's do_light: a parameter is compared with its value (a position or direction once
+// transformed) and flushes stored vertices only when it changes.
 void Context::set_light(int i, GLenum pname, const double* v) {
   lighting::LightParams& l = lights_[i];
   switch (pname) {
-    case GL_AMBIENT: l.ambient = glm::make_vec4(v); break;
-    case GL_DIFFUSE: l.diffuse = glm::make_vec4(v); break;
-    case GL_SPECULAR: l.specular = glm::make_vec4(v); break;
-    case GL_POSITION: l.position = to_eye(v, v[3]); break;
-    case GL_SPOT_DIRECTION: l.spot_direction = direction_to_eye(v); break;
-    case GL_SPOT_EXPONENT: l.spot_exponent = v[0]; break;
-    case GL_SPOT_CUTOFF: l.spot_cutoff = v[0]; break;
-    case GL_CONSTANT_ATTENUATION: l.constant_attenuation = v[0]; break;
-    case GL_LINEAR_ATTENUATION: l.linear_attenuation = v[0]; break;
-    case GL_QUADRATIC_ATTENUATION: l.quadratic_attenuation = v[0]; break;
+    case GL_AMBIENT: assign(l.ambient, glm::make_vec4(v)); break;
+    case GL_DIFFUSE: assign(l.diffuse, glm::make_vec4(v)); break;
+    case GL_SPECULAR: assign(l.specular, glm::make_vec4(v)); break;
+    case GL_POSITION: assign(l.position, to_eye(v, v[3])); break;
+    case GL_SPOT_DIRECTION: assign(l.spot_direction, direction_to_eye(v)); break;
+    case GL_SPOT_EXPONENT: assign(l.spot_exponent, v[0]); break;
+    case GL_SPOT_CUTOFF: assign(l.spot_cutoff, v[0]); break;
+    case GL_CONSTANT_ATTENUATION: assign(l.constant_attenuation, v[0]); break;
+    case GL_LINEAR_ATTENUATION: assign(l.linear_attenuation, v[0]); break;
+    case GL_QUADRATIC_ATTENUATION: assign(l.quadratic_attenuation, v[0]); break;
   }
   constants_dirty_ = true;
 }
 
 void Context::Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   const int i = light_index(light), n = light_param_count(pname);
   if (i < 0 || n == 0) return error(GL_INVALID_ENUM);
   double v[4] = {0, 0, 0, 0};
@@ -87,15 +89,19 @@ void Context::Lighti(GLenum light, GLenum pname, GLint param) {
   Lightiv(light, pname, i);
 }
 
+// Each parameter flushes stored vertices only when it changes (Mesa's light.c).
 void Context::LightModelfv(GLenum pname, const GLfloat* p) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   switch (pname) {
-    case GL_LIGHT_MODEL_AMBIENT: model_.ambient = glm::dvec4(p[0], p[1], p[2], p[3]); break;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: model_.local_viewer = p[0] != 0; break;
-    case GL_LIGHT_MODEL_TWO_SIDE: model_.two_side = p[0] != 0; break;
+    case GL_LIGHT_MODEL_AMBIENT:  // compared in float, as Mesa keeps it (the default 0.2 is not 0.2f)
+      if (changes(glm::vec4(model_.ambient) != glm::vec4(p[0], p[1], p[2], p[3])))
+        model_.ambient = glm::dvec4(p[0], p[1], p[2], p[3]);
+      break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: assign(model_.local_viewer, p[0] != 0); break;
+    case GL_LIGHT_MODEL_TWO_SIDE: assign(model_.two_side, p[0] != 0); break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
-      if (p[0] == GL_SINGLE_COLOR) model_.separate_specular = false;
-      else if (p[0] == GL_SEPARATE_SPECULAR_COLOR) model_.separate_specular = true;
+      if (p[0] == GL_SINGLE_COLOR) assign(model_.separate_specular, false);
+      else if (p[0] == GL_SEPARATE_SPECULAR_COLOR) assign(model_.separate_specular, true);
       else return error(GL_INVALID_ENUM);
       break;
     default: return error(GL_INVALID_ENUM);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstring>
+
 #include "state/context.h"
 #include "state/gl_rules.h"
 
@@ -40,14 +42,23 @@ void Context::LoadIdentity() {
   stack_f().back().load_identity();
 }
 
+// Mesa's glLoadMatrix compares the floats with the top's, bit for bit, and flushes stored vertices
+// only when they differ.
 void Context::LoadMatrix(const glm::dmat4& m) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
+  const glm::mat4 f(m);
+  changes(std::memcmp(&f, &stack_f().back().values(), sizeof f) != 0);
   stack().back() = m;
   stack_f().back().load(glm::mat4(m));
 }
 
+// Mesa's glMultMatrix returns first for a matrix whose floats are the identity's, bit for bit
+// (-0 is not 0): no flush of stored vertices, no multiply (measured: SetterFlush, Unchanged13).
 void Context::MultMatrix(const glm::dmat4& m) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
+  const glm::mat4 f(m), identity(1);
+  if (std::memcmp(&f, &identity, sizeof f) == 0) return;
+  flush_vertices();
   stack().back() = stack().back() * m;
   stack_f().back().multiply(glm::mat4(m));
 }
@@ -117,18 +128,20 @@ void Context::Frustum(double l, double r, double b, double t, double n, double f
   stack_f().back().frustum(fl, fr, fb, ft, fn, ff);
 }
 
+// glViewport and glDepthRange flush stored vertices only on a change (Mesa's viewport.c compares
+// the clamped viewport, and the depth range as given with the clamped one it keeps).
 void Context::Viewport(GLint x, GLint y, GLsizei w, GLsizei h) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   // Mesa clamps the size to GL_MAX_VIEWPORT_DIMS and the origin to its viewport bounds range
   // [-2 max, 2 max - 1] (viewport.c; GL 2.1 says only the size is clamped). Ours does the same:
   // window coordinates then stay far from the int range.
   x = std::clamp(x, -2 * kMaxViewport, 2 * kMaxViewport - 1), y = std::clamp(y, -2 * kMaxViewport, 2 * kMaxViewport - 1);
-  viewport_ = {x, y, std::min(w, kMaxViewport), std::min(h, kMaxViewport)};
+  assign(viewport_, decltype(viewport_){x, y, std::min(w, kMaxViewport), std::min(h, kMaxViewport)});
 }
 
 void Context::DepthRange(double n, double f) {
-  if (!outside_begin_end()) return;
-  depth_range_ = {clamp01(n), clamp01(f)};
+  if (!outside_begin_end_keeping_vertices()) return;
+  if (changes(!(depth_range_[0] == n && depth_range_[1] == f))) depth_range_ = {clamp01(n), clamp01(f)};
 }
 }  // namespace ffc::state

@@ -6,39 +6,41 @@
 
 namespace ffc::state {
 
+// Each setter here flushes stored vertices only when it changes its value (Context::assign), as
+// Mesa's light.c, polygon.c, depth.c, lines.c and points.c do; an invalid value flushes nothing.
 void Context::ShadeModel(GLenum mode) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) return error(GL_INVALID_ENUM);
-  shade_model_ = mode;
+  assign(shade_model_, mode);
 }
 
 void Context::FrontFace(GLenum mode) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (mode != GL_CW && mode != GL_CCW) return error(GL_INVALID_ENUM);
-  front_face_ = mode;
+  assign(front_face_, mode);
 }
 
 void Context::CullFace(GLenum mode) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (!valid_face(mode)) return error(GL_INVALID_ENUM);
-  cull_mode_ = mode;
+  assign(cull_mode_, mode);
 }
 
 void Context::DepthFunc(GLenum func) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (func < GL_NEVER || func > GL_ALWAYS) return error(GL_INVALID_ENUM);
-  depth_func_ = func;
+  assign(depth_func_, func);
 }
 void Context::LineWidth(float w) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (w <= 0) return error(GL_INVALID_VALUE);  // Mesa's test: a NaN passes
-  line_width_ = w;
+  assign(line_width_, w);
 }
 
 void Context::PointSize(float size) {
-  if (!outside_begin_end()) return;
+  if (!outside_begin_end_keeping_vertices()) return;
   if (size <= 0) return error(GL_INVALID_VALUE);  // as Mesa's points.c: a NaN passes
-  point_size_ = size;
+  assign(point_size_, size);
 }
 
 raster::State Context::raster_state() const {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "harness.h"
+#include "setter_calls.h"
 
 namespace ffc::state_test {
 namespace {
@@ -95,6 +96,7 @@ void run_step(const Step& s, int index) {
     }
     case 'h': glShadeModel(s.a == 0 ? GL_FLAT : GL_SMOOTH); break;  // FLUSH_VERTICES when it changes
     case 'n': glNormal3fv(kNormals + 3 * s.a); break;                // joins the vbo format
+    case 's': setter_call(s.b * 5 + s.c, s.a == 1); break;          // FLUSH_VERTICES on a change only
   }
 }
 
@@ -168,6 +170,15 @@ std::vector<Case> flush_streams() { return random_streams("Flush", 20261125, "cc
 class ColorMaterialFlushStreams : public ::testing::TestWithParam<Case> {};
 TEST_P(ColorMaterialFlushStreams, MatchesMesa) { check_case(GetParam(), 2e-6); }
 INSTANTIATE_TEST_SUITE_P(Generated, ColorMaterialFlushStreams, ::testing::ValuesIn(flush_streams()), case_name);
+
+// Mesa's rule of flushing only when a setter changes its value, over fifteen setters (light.c,
+// polygon.c, fog.c, blend.c, depth.c, lines.c, points.c, hint.c; tests/state/setter_calls.h), each
+// called with its default or one other value, so that most calls change nothing, among colours of
+// 4 and 3 components, glMaterial, colour material, draws and reads of the current colour.
+std::vector<Case> setter_streams() { return random_streams("Setter", 20261126, "ccttmmMedirqqsssssss", 300); }
+class SetterFlushStreams : public ::testing::TestWithParam<Case> {};
+TEST_P(SetterFlushStreams, MatchesMesa) { check_case(GetParam(), 2e-6); }
+INSTANTIATE_TEST_SUITE_P(Generated, SetterFlushStreams, ::testing::ValuesIn(setter_streams()), case_name);
 
 class ColorMaterialMeasured : public ::testing::TestWithParam<Case> {};
 TEST_P(ColorMaterialMeasured, MatchesMesa) { check_case(GetParam(), 2e-6); }
