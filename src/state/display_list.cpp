@@ -44,7 +44,21 @@ void list_end_draw() {
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
+void list_pending_normal(double x, double y, double z) {
+  if (Context* c = Context::current()) c->list_state().normal_pending = true, c->list_state().pending_normal = {x, y, z};
+}
 }  // namespace
+
+// Measured against Mesa (repro list_normal_pending.txt): a list holding glNormal3f(.5, .5, .5), then
+// glBegin, glNormal3f(0, 0, 1), a vertex, glEnd reads back (.5, .5, .5) after glCallList. The first
+// glNormal runs through Mesa's immediate-mode vbo and waits there for a flush; the list's vertex
+// list then writes its own last normal to the state, and the next flush (glGet, glBegin) copies the
+// pending normal over it. glCallList flushes before it runs, so the pending normal lives from its
+// glNormal to the end of the outermost glCallList or glCallLists; soft puts it back there.
+void Context::mark_list_normal(DisplayList& l, double x, double y, double z) {
+  l.record<list_pending_normal>(x, y, z);
+}
+
 
 void Context::run_held_back(bool new_format) {
   if (new_format) lists_.attributes = 0;
@@ -139,6 +153,18 @@ void Context::EndList() {
 }
 
 void Context::CallList(GLuint list) {
+  if (lists_.calling) return call_one_list(list);
+  lists_.calling = true, lists_.normal_pending = false;
+  call_one_list(list);
+  end_list_calls();
+}
+
+void Context::end_list_calls() {
+  if (lists_.normal_pending) normal_ = lists_.pending_normal;
+  lists_.calling = false, lists_.normal_pending = false;
+}
+
+void Context::call_one_list(GLuint list) {
   // Mesa stops silently at its nesting limit, and a name without a list does nothing.
   if (lists_.depth >= ListState::kMaxNesting) return;
   const auto it = lists_.lists.find(list);
@@ -185,8 +211,12 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
   }
+  const bool outermost = !lists_.calling;
+  lists_.calling = true;
+  if (outermost) lists_.normal_pending = false;
   const GLuint base = lists_.base;
   for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
+  if (outermost) end_list_calls();
 }
 
 namespace {

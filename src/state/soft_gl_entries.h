@@ -63,6 +63,7 @@ bool compiled_only(const A&... a) {
   constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
   if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
     l->record<Fn>(a...);
+    if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_normal(*l, a...);
     if (!c->list_executes()) return true;
     c->run_held_back();
     return false;
