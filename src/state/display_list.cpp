@@ -44,8 +44,8 @@ void list_end_draw() {
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
-void list_pending_normal(double x, double y, double z) {
-  if (Context* c = Context::current()) c->list_state().normal_pending = true, c->list_state().pending_normal = {x, y, z};
+void list_pending_attribute(int kind) {
+  if (Context* c = Context::current()) c->keep_pending(kind);
 }
 }  // namespace
 
@@ -54,9 +54,15 @@ void list_pending_normal(double x, double y, double z) {
 // glNormal runs through Mesa's immediate-mode vbo and waits there for a flush; the list's vertex
 // list then writes its own last normal to the state, and the next flush (glGet, glBegin) copies the
 // pending normal over it. glCallList flushes before it runs, so the pending normal lives from its
-// glNormal to the end of the outermost glCallList or glCallLists; soft puts it back there.
-void Context::mark_list_normal(DisplayList& l, double x, double y, double z) {
-  l.record<list_pending_normal>(x, y, z);
+// glNormal to the end of the outermost glCallList or glCallLists; soft puts it back there. A glColor
+// does the same (list_color_pending.txt).
+void Context::mark_list_attribute(DisplayList& l, int kind) { l.record<list_pending_attribute>(kind); }
+
+void Context::keep_pending(int kind) {
+  if (!lists_.calling) return;  // GL_COMPILE_AND_EXECUTE's own calls: measured to agree already
+  lists_.pending |= kind;
+  if (kind == 1) lists_.pending_normal = normal_;
+  if (kind == 2) lists_.pending_color = color_;  // its alpha as the vbo's colour size left it
 }
 
 
@@ -154,14 +160,16 @@ void Context::EndList() {
 
 void Context::CallList(GLuint list) {
   if (lists_.calling) return call_one_list(list);
-  lists_.calling = true, lists_.normal_pending = false;
+  lists_.calling = true, lists_.pending = 0;
   call_one_list(list);
   end_list_calls();
 }
 
 void Context::end_list_calls() {
-  if (lists_.normal_pending) normal_ = lists_.pending_normal;
-  lists_.calling = false, lists_.normal_pending = false;
+  // The colour reaches the state (and a tracked material) at soft's next flush, as Mesa's does.
+  if (lists_.pending & 1) normal_ = lists_.pending_normal;
+  if (lists_.pending & 2) color_ = lists_.pending_color;
+  lists_.calling = false, lists_.pending = 0;
 }
 
 void Context::call_one_list(GLuint list) {
@@ -213,7 +221,7 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   }
   const bool outermost = !lists_.calling;
   lists_.calling = true;
-  if (outermost) lists_.normal_pending = false;
+  if (outermost) lists_.pending = 0;
   const GLuint base = lists_.base;
   for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
   if (outermost) end_list_calls();
