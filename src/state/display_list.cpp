@@ -262,7 +262,9 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (e != GL_NO_ERROR) return l.record<list_error>(e);
   if (count == 0) return;
   keep_current ? l.record<list_begin_draw>(mode) : l.record<list_begin>(mode);
+  lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
+  lists_.compiling_draw = false;
   keep_current ? l.record<list_end_draw>() : l.record<list_end>();
 }
 
@@ -299,13 +301,17 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
 
 void Context::compile_element(DisplayList& l, GLint i) {
   const Fixed f = element_fixed();
+  // A glArrayElement outside the list's glBegin/glEnd sets the pending values too (end_list_calls).
+  const bool outside = &l == &lists_.compiling && !lists_.open && !lists_.compiling_draw;
   if (normal_array_.enabled && normal_array_.pointer) {
     const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
     l.record<list_normal>(n.x, n.y, n.z);
+    if (outside) mark_list_attribute(l, 1);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
+    if (outside) mark_list_attribute(l, 2);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));

@@ -119,6 +119,7 @@ struct ListState {
   // (display_list.cpp, Context::end_list_calls).
   bool calling = false;  // inside the outermost glCallList or glCallLists
   int pending = 0;       // bits: normal 1, colour 2
+  bool compiling_draw = false;  // a glDrawArrays or glDrawElements being compiled
   glm::dvec3 pending_normal{0, 0, 1};
   glm::dvec4 pending_color{1, 1, 1, 1};
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
