@@ -221,7 +221,7 @@ class Context {
   void CallList(GLuint list);
   void CallLists(GLsizei n, GLenum type, const void* lists);
   void call_one_list(GLuint list);
-  void end_list_calls();  // the outermost glCallList(s) ends: a pending normal reaches the state
+  void end_list_calls();  // the outermost glCallList(s) ends: a pending normal or colour reaches the state
   void ListBase(GLuint base);
   // Not GL: the list that calls are recorded into now (null when they only execute), and whether
   // a recorded call also executes (GL_COMPILE_AND_EXECUTE).
