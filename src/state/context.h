@@ -220,6 +220,8 @@ class Context {
   void EndList();
   void CallList(GLuint list);
   void CallLists(GLsizei n, GLenum type, const void* lists);
+  void call_one_list(GLuint list);
+  void end_list_calls();  // the outermost glCallList(s) ends: a pending normal or colour reaches the state
   void ListBase(GLuint base);
   // Not GL: the list that calls are recorded into now (null when they only execute), and whether
   // a recorded call also executes (GL_COMPILE_AND_EXECUTE).
@@ -228,6 +230,8 @@ class Context {
   DisplayList& list_held_back() { return lists_.held_back; }
   void run_held_back(bool new_format = true);  // executes the vertex-stream calls GL_COMPILE_AND_EXECUTE held back
   void hold_back(int kind);  // a vertex-stream call is held back (kind: see compiled_only)
+  void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
+  void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush
   ListState& list_state() { return lists_; }
   void record_list_error(GLenum e);  // a compile error: recorded, and raised now in GL_COMPILE_AND_EXECUTE
   // Vertex-array draws while compiling, dereferenced (indices null: first .. first + count - 1).

@@ -44,7 +44,27 @@ void list_end_draw() {
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
+void list_pending_attribute(int kind) {
+  if (Context* c = Context::current()) c->keep_pending(kind);
+}
 }  // namespace
+
+// Measured against Mesa (repro list_normal_pending.txt): a list holding glNormal3f(.5, .5, .5), then
+// glBegin, glNormal3f(0, 0, 1), a vertex, glEnd reads back (.5, .5, .5) after glCallList. The first
+// glNormal runs through Mesa's immediate-mode vbo and waits there for a flush; the list's vertex
+// list then writes its own last normal to the state, and the next flush (glGet, glBegin) copies the
+// pending normal over it. glCallList flushes before it runs, so the pending normal lives from its
+// glNormal to the end of the outermost glCallList or glCallLists; soft puts it back there. A glColor
+// does the same (list_color_pending.txt).
+void Context::mark_list_attribute(DisplayList& l, int kind) { l.record<list_pending_attribute>(kind); }
+
+void Context::keep_pending(int kind) {
+  if (!lists_.calling) return;  // GL_COMPILE_AND_EXECUTE's own calls: measured to agree already
+  lists_.pending |= kind;
+  if (kind == 1) lists_.pending_normal = normal_;
+  if (kind == 2) lists_.pending_color = color_;  // its alpha as the vbo's colour size left it
+}
+
 
 void Context::run_held_back(bool new_format) {
   if (new_format) lists_.attributes = 0;
@@ -139,6 +159,20 @@ void Context::EndList() {
 }
 
 void Context::CallList(GLuint list) {
+  if (lists_.calling) return call_one_list(list);
+  lists_.calling = true, lists_.pending = 0;
+  call_one_list(list);
+  end_list_calls();
+}
+
+void Context::end_list_calls() {
+  // The colour reaches the state (and a tracked material) at soft's next flush, as Mesa's does.
+  if (lists_.pending & 1) normal_ = lists_.pending_normal;
+  if (lists_.pending & 2) color_ = lists_.pending_color;
+  lists_.calling = false, lists_.pending = 0;
+}
+
+void Context::call_one_list(GLuint list) {
   // Mesa stops silently at its nesting limit, and a name without a list does nothing.
   if (lists_.depth >= ListState::kMaxNesting) return;
   const auto it = lists_.lists.find(list);
@@ -185,8 +219,12 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
   }
+  const bool outermost = !lists_.calling;
+  lists_.calling = true;
+  if (outermost) lists_.pending = 0;
   const GLuint base = lists_.base;
   for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
+  if (outermost) end_list_calls();
 }
 
 namespace {
@@ -224,7 +262,9 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (e != GL_NO_ERROR) return l.record<list_error>(e);
   if (count == 0) return;
   keep_current ? l.record<list_begin_draw>(mode) : l.record<list_begin>(mode);
+  lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
+  lists_.compiling_draw = false;
   keep_current ? l.record<list_end_draw>() : l.record<list_end>();
 }
 
@@ -261,13 +301,17 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
 
 void Context::compile_element(DisplayList& l, GLint i) {
   const Fixed f = element_fixed();
+  // A glArrayElement outside the list's glBegin/glEnd sets the pending values too (end_list_calls).
+  const bool outside = &l == &lists_.compiling && !lists_.open && !lists_.compiling_draw;
   if (normal_array_.enabled && normal_array_.pointer) {
     const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
     l.record<list_normal>(n.x, n.y, n.z);
+    if (outside) mark_list_attribute(l, 1);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
+    if (outside) mark_list_attribute(l, 2);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));

@@ -113,6 +113,15 @@ struct ListState {
   glm::dvec3 kept_normal{0, 0, 1};
   glm::dvec4 kept_color{1, 1, 1, 1};
   glm::vec4 kept_texcoord{0, 0, 0, 1};
+  // A glNormal or glColor a list runs outside its own glBegin/glEnd goes through Mesa's
+  // immediate-mode vbo and stays pending there: a later primitive of the list writes its last values
+  // to the state, and the next flush (a glGet, a glBegin) copies the pending ones over them
+  // (display_list.cpp, Context::end_list_calls).
+  bool calling = false;  // inside the outermost glCallList or glCallLists
+  int pending = 0;       // bits: normal 1, colour 2
+  bool compiling_draw = false;  // a glDrawArrays or glDrawElements being compiled
+  glm::dvec3 pending_normal{0, 0, 1};
+  glm::dvec4 pending_color{1, 1, 1, 1};
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
   static constexpr int kMaxNesting = 64;
 };

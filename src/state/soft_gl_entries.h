@@ -63,6 +63,8 @@ bool compiled_only(const A&... a) {
   constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
   if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
     l->record<Fn>(a...);
+    if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1);
+    if constexpr (same_entry<Fn, &ColorValues>()) c->mark_list_attribute(*l, 2);
     if (!c->list_executes()) return true;
     c->run_held_back();
     return false;
