@@ -66,6 +66,43 @@ void Context::keep_pending(int kind) {
 }
 
 
+namespace {
+void list_snapshot_last_vertex() {
+  if (Context* c = Context::current()) c->snapshot_last_vertex();
+}
+void list_drop_trailing(int kind) {
+  if (Context* c = Context::current()) c->drop_trailing(kind);
+}
+}  // namespace
+
+// Measured against Mesa, call by call (repro list_trailing_normal.txt): a glNormal or glColor
+// after the last vertex of a list's own glBegin/glEnd does not become current when the list runs,
+// in GL_COMPILE and in GL_COMPILE_AND_EXECUTE: glBegin, glVertex, glNormal3f(.5, .5, .5), glEnd
+// leaves the normal from before the list; with glVertex, glNormal(.5), glVertex, glNormal(.7) it
+// is .5, the last vertex's. Mesa's vertex list hands the state the values its last vertex stored.
+// Soft keeps those values when the first such attribute runs and puts them back after glEnd.
+void Context::list_trailing(DisplayList& l, int kind) {
+  if (!lists_.had_vertex) return;
+  if (lists_.trailing == 0) {
+    l.record<list_snapshot_last_vertex>();
+    if (list_executes()) lists_.held_back.record<list_snapshot_last_vertex>();
+  }
+  lists_.trailing |= kind;
+}
+
+void Context::list_primitive_end(DisplayList& l, int trailing) {
+  if (trailing) l.record<list_drop_trailing>(trailing);
+}
+
+void Context::snapshot_last_vertex() {
+  lists_.last_vertex_normal = normal_, lists_.last_vertex_color = color_;
+}
+
+void Context::drop_trailing(int kind) {
+  if (kind & 1) normal_ = lists_.last_vertex_normal;
+  if (kind & 2) color_ = lists_.last_vertex_color;
+}
+
 void Context::run_held_back(bool new_format) {
   if (new_format) lists_.attributes = 0;
   lists_.vertices = 0;
@@ -135,7 +172,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.mode = mode;
   lists_.compiling.clear();
   lists_.held_back.clear();
-  lists_.open = false, lists_.vertices = 0, lists_.attributes = 0;
+  lists_.open = false, lists_.vertices = 0, lists_.attributes = 0, lists_.had_vertex = false, lists_.trailing = 0;
 }
 
 void Context::EndList() {
@@ -302,20 +339,27 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
 void Context::compile_element(DisplayList& l, GLint i) {
   const Fixed f = element_fixed();
   // A glArrayElement outside the list's glBegin/glEnd sets the pending values too (end_list_calls).
-  const bool outside = &l == &lists_.compiling && !lists_.open && !lists_.compiling_draw;
+  const bool compiled = &l == &lists_.compiling && !lists_.compiling_draw;
+  const bool outside = compiled && !lists_.open;
+  // Inside the list's own glBegin its values count as glNormal, glColor and glVertex do for the
+  // trailing attributes (list_trailing).
+  const bool inside = compiled && lists_.open;
   if (normal_array_.enabled && normal_array_.pointer) {
     const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
+    if (inside) list_trailing(l, 1);
     l.record<list_normal>(n.x, n.y, n.z);
     if (outside) mark_list_attribute(l, 1);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
+    if (inside) list_trailing(l, 2);
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
     if (outside) mark_list_attribute(l, 2);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
+    if (inside) lists_.had_vertex = true, lists_.trailing = 0;
   }
 }
 

@@ -122,6 +122,13 @@ struct ListState {
   bool compiling_draw = false;  // a glDrawArrays or glDrawElements being compiled
   glm::dvec3 pending_normal{0, 0, 1};
   glm::dvec4 pending_color{1, 1, 1, 1};
+  // A glNormal or glColor after the last vertex of a list's own primitive never becomes current
+  // (display_list.cpp, Context::list_trailing): compiling, whether the open primitive had a vertex
+  // and which attributes followed its last one; running, the values that vertex took.
+  bool had_vertex = false;
+  int trailing = 0;  // bits: normal 1, colour 2
+  glm::dvec3 last_vertex_normal{0, 0, 1};
+  glm::dvec4 last_vertex_color{1, 1, 1, 1};
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
   static constexpr int kMaxNesting = 64;
 };

@@ -75,7 +75,11 @@ bool compiled_only(const A&... a) {
     if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
   }
   if constexpr (K == ListKind::Vertex) {
-    if constexpr (same_entry<Fn, &Begin>()) ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...);
+    if constexpr (same_entry<Fn, &Begin>())
+      ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false, ls.trailing = 0;
+    if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
+    if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
+    if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
     if constexpr (same_entry<Fn, &End>()) {
       // A glEnd without its glBegin in the list: Mesa records it, and in GL_COMPILE_AND_EXECUTE
       // executes it now as a state call (measured: GL_INVALID_OPERATION after a refused glBegin).
@@ -89,6 +93,8 @@ bool compiled_only(const A&... a) {
     }
   }
   l->record<Fn>(a...);
+  [[maybe_unused]] const int trailing = ls.had_vertex ? ls.trailing : 0;  // what glEnd drops (Context::list_trailing)
+  if constexpr (same_entry<Fn, &End>()) c->list_primitive_end(*l, trailing);
   if constexpr (K == ListKind::Vertex) {
     int kind = 0;  // what enters Mesa's vertex format: a vertex (-1), an attribute (a bit), or neither
     if constexpr (same_entry<Fn, &VertexValues>()) kind = -1;
@@ -98,6 +104,10 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
     c->hold_back(kind);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
+    if constexpr (same_entry<Fn, &End>()) {
+      if (c->list_executes()) c->list_primitive_end(c->list_held_back(), trailing);
+      ls.had_vertex = false, ls.trailing = 0;
+    }
     return true;
   }
   if (!c->list_executes()) return true;
