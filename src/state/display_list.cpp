@@ -104,7 +104,7 @@ void Context::drop_trailing(int kind) {
 }
 
 void Context::run_held_back(bool new_format) {
-  if (new_format) lists_.attributes = 0;
+  if (new_format) lists_.attributes = 0, lists_.shown = false;
   lists_.vertices = 0;
   if (lists_.held_back.empty()) return;
   ++lists_.depth;  // nothing recorded while they run
@@ -124,6 +124,10 @@ void Context::hold_back(int kind) {
   if (lists_.open && lists_.vertices > 0 && !(lists_.attributes & kind)) {
     if (lists_.open_mode == GL_TRIANGLE_STRIP && lists_.vertices % 2) deviations_.insert(kListStripWrap);
     if (lists_.open_mode == GL_LINE_LOOP) deviations_.insert(kLineLoopWrap);
+    // Measured: glBegin, glColor4f(0, 0, 0, 0), glVertex2f, then a first glNormal (the wrap) reads
+    // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
+    // flushed the rest: the wrapped vertices are drawn without touching the current values.
+    if (list_executes() && !lists_.shown) lists_.shown = true, lists_.shown_normal = normal_, lists_.shown_color = color_;
     if (list_executes()) run_held_back(false);
     lists_.vertices = 0;
   }
@@ -173,6 +177,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.compiling.clear();
   lists_.held_back.clear();
   lists_.open = false, lists_.vertices = 0, lists_.attributes = 0, lists_.had_vertex = false, lists_.trailing = 0;
+  lists_.shown = false;
 }
 
 void Context::EndList() {

@@ -129,6 +129,11 @@ struct ListState {
   int trailing = 0;  // bits: normal 1, colour 2
   glm::dvec3 last_vertex_normal{0, 0, 1};
   glm::dvec4 last_vertex_color{1, 1, 1, 1};
+  // GL_COMPILE_AND_EXECUTE: a wrap drew the list's primitive so far, but glGet reads the current
+  // values from before it until the rest is flushed (display_list.cpp, Context::hold_back).
+  bool shown = false;
+  glm::dvec3 shown_normal{0, 0, 1};
+  glm::dvec4 shown_color{1, 1, 1, 1};
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
   static constexpr int kMaxNesting = 64;
 };

@@ -73,8 +73,14 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     case GL_POLYGON_MODE: FFC_GET(double(polygon_mode_[0]), double(polygon_mode_[1])); break;
     case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_)); break;
     case GL_DEPTH_FUNC: FFC_GET(double(depth_func_)); break;
-    case GL_CURRENT_COLOR: vec4(color_, true); break;
-    case GL_CURRENT_NORMAL: FFC_GET(normal_.x, normal_.y, normal_.z); normalized = kFromFloat; break;
+    // A wrapped GL_COMPILE_AND_EXECUTE primitive leaves them as they were (ListState::shown).
+    case GL_CURRENT_COLOR: vec4(lists_.shown ? lists_.shown_color : color_, true); break;
+    case GL_CURRENT_NORMAL: {
+      const glm::dvec3& nv = lists_.shown ? lists_.shown_normal : normal_;
+      FFC_GET(nv.x, nv.y, nv.z);
+      normalized = kFromFloat;
+      break;
+    }
     case GL_COLOR_CLEAR_VALUE: vec4(glm::dvec4(clear_color_), true); break;
     case GL_DEPTH_CLEAR_VALUE: FFC_GET(clear_depth_); normalized = kFromDouble; break;
     case GL_LINE_WIDTH: FFC_GET(double(line_width_)); break;
