@@ -232,6 +232,7 @@ class Context {
   void hold_back(int kind);  // a vertex-stream call is held back (kind: see compiled_only)
   void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
   void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush
+  void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
