@@ -108,7 +108,7 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft) {
     else if (n == "glEnd" && open) {
       open = false;
       if (attribute && !vertex) return int(i);
-    } else if (open && starts(n, "glVertex")) vertex = true;
+    } else if (open && starts(n, "glVertex") && n != "glVertexPointer") vertex = true;  // the pointer is client state
     else if (open && n == "glArrayElement") attribute |= element_attributes, vertex |= vertex_array;
     else if (open && (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord"))) attribute = true;
     else if (!open && (n == "glDrawArrays" || n == "glDrawElements") && !vertex_array && element_attributes &&
@@ -116,6 +116,16 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft) {
       return int(i);
   }
   return -1;
+}
+
+// A mismatch of the current values: the current normal, colour or texture coordinates, or a
+// material where colour material tracks the colour (glEnable(GL_COLOR_MATERIAL) before m).
+bool current_values(const Stream& s, const Mismatch& m) {
+  if (m.kind != "state") return false;
+  if (m.key.find("GL_CURRENT_") != std::string::npos) return true;
+  return m.key.find("glGetMaterialfv") != std::string::npos && any_call(s, m.call, [](const Call& c, size_t) {
+           return is(c, "glEnable") && GLenum(c.args[0].num) == GL_COLOR_MATERIAL;
+         });
 }
 
 // Whether call i is made while a list compiles (a glNewList soft took, its glEndList not yet).
@@ -267,15 +277,17 @@ const std::vector<KnownDeviation>& known_deviations() {
        "texture coordinates (and a tracked material) from memory it never wrote when the list runs; soft from the "
        "attributes sent",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         // The current values, and the material where colour material tracks the colour.
-         const bool current = m.key.find("GL_CURRENT_") != std::string::npos;
-         const bool material = m.key.find("glGetMaterialfv") != std::string::npos &&
-                               any_call(s, m.call, [](const Call& c, size_t) {
-                                 return is(c, "glEnable") && GLenum(c.args[0].num) == GL_COLOR_MATERIAL;
-                               });
-         if (m.kind != "state" || !(current || material)) return false;
+         if (!current_values(s, m)) return false;
          const int at = vertexless_list_primitive(s, soft);
          return at >= 0 && m.call > at;
+       }},
+      // Row 65: measured, glBegin(GL_LINE_LOOP), glVertex, glColor3f(.5, .25, 1), glVertex, glEnd in a
+      // list reads back (0, 0, 0, 1) after glCallList (and in GL_COMPILE_AND_EXECUTE after the next
+      // flush), with a colour at the first vertex too; immediate mode agrees.
+      {"mesa-list-line-loop-wrap-current", state::kListLineLoopCurrent,
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
+                                                  state::kListLineLoopCurrent) != soft.deviations.end();
        }},
       // Row 54: the call's own error (Mesa compiles it and checks when the list runs) and pictures.
       {"soft-drawpixels-in-list-not-compiled",

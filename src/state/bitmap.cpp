@@ -94,7 +94,8 @@ void Context::Bitmap(GLsizei w, GLsizei h, float xorig, float yorig, float xmove
                      bool packed) {
   if (!outside_begin_end()) return;
   const SinkPixels through_sink(*this);  // draw_sink.cpp: soft draws into the sink's picture
-  flush_stored();  // Mesa: FLUSH_VERTICES first
+  // Mesa's FLUSH_VERTICES (outside_begin_end) flushes stored vertices only where a flush was asked
+  // for: a pending glMaterial stays (measured; repro material_pending_through_pixels.txt).
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (!raster_pos_.valid) return;  // no fragments, and the position stays (invalid)

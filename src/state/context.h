@@ -232,6 +232,7 @@ class Context {
   void hold_back(int kind);  // a vertex-stream call is held back (kind: see compiled_only)
   void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
   void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush
+  void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
@@ -474,7 +475,10 @@ class Context {
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
-  bool vertices_kept_ = false;  // Mesa's NeedFlush asks for a flush of stored vertices (after glBegin, or a FLUSH_CURRENT)
+  bool vertices_kept_ = false;  // Mesa's NeedFlush asks for a flush of stored vertices (a glEnd that stored some, or a FLUSH_CURRENT)
+  // The open primitive's vertices that Mesa's last wrap drew and dropped (vbo_wrap): the rest is
+  // what its glEnd finds stored.
+  size_t wrap_start_ = 0;
   bool format_has_position_ = false;      // Mesa's vbo format holds the position (a glVertex since its reset)
   int position_size_ = 0;                 // and its size then (position_size)
   // glDrawArrays and glDrawElements leave the current normal and colour as they were (Mesa; GL 2.1

@@ -73,7 +73,26 @@ void list_snapshot_last_vertex() {
 void list_drop_trailing(int kind) {
   if (Context* c = Context::current()) c->drop_trailing(kind);
 }
+void list_loopback_attributes(int kinds, int kind, bool first_format) {
+  if (Context* c = Context::current()) c->list_loopback(kinds, kind, first_format);
+}
 }  // namespace
+
+// Measured against Mesa (repro list_wrap_replaces_pending.txt): a list holding glColor4f(0, 0, 0,
+// 0) outside its glBegin/glEnd, then glBegin, glVertex, glColor4f(0, 0, 0, 1), glVertex, glEnd
+// reads back alpha 1 after glCallList, not the pending 0 (list_color_pending.txt's rule): the
+// colour first appearing after a vertex wraps Mesa's list, and the rest of the primitive, which
+// does not begin in its own vertex list, is replayed through immediate mode. That replay takes
+// the pending values first and leaves the last vertex's values of the attributes it holds, those
+// in the format at the wrap; an attribute outside it (a pending colour when a normal wrapped)
+// stays pending. Measured too, and taken as found (the mechanism not traced): where the wrapping
+// attribute is itself pending and the primitive's first vertex already had an attribute
+// (glNormal, glVertex, then glColor), every pending value stays. An attribute that joins after the
+// wrap but before the next vertex counts as wrapping again (Mesa's store holds the kept vertices).
+void Context::list_loopback(int kinds, int kind, bool first_format) {
+  if (!lists_.calling || ((lists_.pending & kind) && first_format)) return;
+  lists_.pending &= ~kinds;
+}
 
 // Measured against Mesa, call by call (repro list_trailing_normal.txt): a glNormal or glColor
 // after the last vertex of a list's own glBegin/glEnd does not become current when the list runs,
@@ -119,14 +138,25 @@ void Context::run_held_back(bool new_format) {
 // triangle strip wrapped after an odd number of vertices (kListStripWrap) and a line loop (its
 // closing segment lost, as in immediate mode: kLineLoopWrap), in both list modes.
 void Context::hold_back(int kind) {
-  if (kind < 0) return void(++lists_.vertices);
-  if (kind == 0) return;
-  if (lists_.open && lists_.vertices > 0 && !(lists_.attributes & kind)) {
+  if (kind < 0) {
+    if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
+    return void(++lists_.vertices);
+  }
+  if (kind == 0) {
+    if (lists_.open && lists_.vertices == 0 && lists_.attributes == 0) lists_.wrapped = false;  // a glBegin
+    return;
+  }
+  const bool joins = lists_.open && !(lists_.attributes & kind);
+  if (joins && lists_.vertices == 0 && lists_.wrapped)
+    lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
+  if (joins && lists_.vertices > 0) {
+    lists_.wrapped = true;
     if (lists_.open_mode == GL_TRIANGLE_STRIP && lists_.vertices % 2) deviations_.insert(kListStripWrap);
-    if (lists_.open_mode == GL_LINE_LOOP) deviations_.insert(kLineLoopWrap);
+    if (lists_.open_mode == GL_LINE_LOOP) deviations_.insert(kLineLoopWrap), deviations_.insert(kListLineLoopCurrent);
     // Measured: glBegin, glColor4f(0, 0, 0, 0), glVertex2f, then a first glNormal (the wrap) reads
     // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
     // flushed the rest: the wrapped vertices are drawn without touching the current values.
+    lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
     if (list_executes() && !lists_.shown) lists_.shown = true, lists_.shown_normal = normal_, lists_.shown_color = color_;
     if (list_executes()) run_held_back(false);
     lists_.vertices = 0;

@@ -33,6 +33,12 @@ inline constexpr const char* kListStripWrap =
     "odd number of its vertices: Mesa's list wraps the strip and draws other triangles around the wrap "
     "(GL_COMPILE and GL_COMPILE_AND_EXECUTE alike); soft draws the strip as sent";
 
+// Row 65 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListLineLoopCurrent =
+    "a display list's GL_LINE_LOOP whose vertex format grows after its first vertex: when the list runs, Mesa "
+    "sets the current colour and normal (and a tracked material) to zeros, alpha 1 for a 3-component colour; soft "
+    "to the last values sent";
+
 // N floats (or doubles) by value: a pointer argument's contents, recorded.
 template <int N, typename T = GLfloat>
 struct Floats {
@@ -132,6 +138,10 @@ struct ListState {
   // GL_COMPILE_AND_EXECUTE: a wrap drew the list's primitive so far, but glGet reads the current
   // values from before it until the rest is flushed (display_list.cpp, Context::hold_back).
   bool shown = false;
+  // Compiling, for the rest of a wrapped primitive (display_list.cpp, Context::list_loopback): whether
+  // the open primitive wrapped, and the attributes in the format at its first vertex.
+  bool wrapped = false;
+  int first_format = 0;
   glm::dvec3 shown_normal{0, 0, 1};
   glm::dvec4 shown_color{1, 1, 1, 1};
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).

@@ -73,9 +73,12 @@ void Context::vbo_wrap(bool alpha_one) {
       keep = n < (prim_mode_ == GL_QUAD_STRIP ? 4u : 3u) ? n : 2 + n % 2;
       shared = keep < n;
       break;
-    case GL_LINE_LOOP: deviations_.insert(kLineLoopWrap); return;  // docs/deviations.md row 48
-    default: return;  // points keep nothing
+    case GL_LINE_LOOP: deviations_.insert(kLineLoopWrap), wrap_start_ = n - 1; return;  // docs/deviations.md row 48
+    default: wrap_start_ = n; return;  // points keep nothing
   }
+  // What is left after the changes below, less the kept vertices (stored again after the wrap).
+  const size_t left = immediate_list_ || !(shared || (prim_mode_ == GL_QUADS && n - keep >= 4)) ? n : keep;
+  wrap_start_ = left - keep;
   if (immediate_list_) {  // GL_TRIANGLES: the unfinished triangle's colours, lit at glEnd
     if (alpha_one && !list_color_.empty())
       for (size_t i = n - keep; i < n; ++i) {
@@ -164,9 +167,14 @@ void Context::Begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
   validate_matrices();  // Mesa validates its state before it checks the mode
   if (!valid_primitive(mode)) return error(primitive_error(mode));
+  // Mesa's glBegin asks for no flush: its glEnd does when the primitive left vertices stored
+  // (End). Its own flush of a format without a position answers the flush asked for so far.
+  if (lists_.depth > 0) vertices_kept_ = !spec_;  // a list's primitive: as before (not measured)
+  else if (!format_has_position_ && (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()))
+    vertices_kept_ = false;
   flush_stored_keeping_format();
   set_color_varies(false);
-  vertices_kept_ = !spec_;
+  wrap_start_ = 0;
   in_begin_ = true;
   prim_mode_ = mode;
   texcoord_varies_ = false;
@@ -243,18 +251,31 @@ void Context::leave_triangle_list() {
   light_pending();
 }
 
+// Mesa's glEnd asks for a flush of stored vertices only when its primitive still holds some: not
+// after a wrap that drew them all and kept none (a glColor after the last vertex of GL_LINES,
+// GL_TRIANGLES, GL_QUADS or GL_POINTS) nor for a primitive without a vertex. Then the values sent
+// stay pending: the next state call flushes nothing, and a glColorMaterial that changes the mode
+// tracks the colour with the new mode only (measured: glEnable(GL_COLOR_MATERIAL), glBegin(GL_LINES),
+// two vertices, glColor3f(0, 0, 0), glEnd, glColorMaterial(GL_FRONT_AND_BACK, GL_EMISSION) leaves
+// the ambient 1 on Mesa; soft read 0 before; repro trailing_color_after_wrap.txt).
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = store_corners_ = false;
-  if (sink_draws()) return sink_end(), flush_stored_keeping_format();  // draw_sink.cpp
+  const size_t sent = immediate_list_ ? list_corner_.size() : verts_.size();
+  const bool stored = spec_ || lists_.depth > 0 || sink_draws() || sent > wrap_start_;
+  if (stored && !spec_) vertices_kept_ = true;
+  const auto flush = [&] {
+    if (stored) flush_stored_keeping_format();
+  };
+  if (sink_draws()) return sink_end(), flush();  // draw_sink.cpp
   if (!immediate_list_) {
     light_pending();
     flush_primitive();
-    return flush_stored_keeping_format();
+    return flush();
   }
   immediate_list_ = false;
   immediate_to_list();
   draw_triangle_list(list_corner_.data(), list_corner_.size() / 3);
-  flush_stored_keeping_format();
+  flush();
 }
 }  // namespace ffc::state

@@ -276,7 +276,8 @@ bool known_type(GLenum t) {
 void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
   if (!outside_begin_end()) return;
   const SinkPixels through_sink(*this);  // draw_sink.cpp: soft draws into the sink's picture
-  flush_stored();  // Mesa: FLUSH_VERTICES before anything else
+  // Mesa's FLUSH_VERTICES (outside_begin_end) flushes stored vertices only where a flush was asked
+  // for: a pending glMaterial stays (measured; repro material_pending_through_pixels.txt).
   validate_matrices();
   if (w < 0 || h < 0) return error(GL_INVALID_VALUE);
   if (!known_format(format) || !known_type(type)) return error(GL_INVALID_ENUM);
