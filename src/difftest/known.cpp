@@ -1,7 +1,5 @@
 #include "difftest/known.h"
 
-#include <algorithm>
-
 #include "state/context.h"
 #include "state/display_list.h"
 
@@ -116,17 +114,6 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft) {
       return int(i);
   }
   return -1;
-}
-
-// Whether call i is made while a list compiles (a glNewList soft took, its glEndList not yet).
-bool compiling_at(const Stream& s, const SideResult& soft, size_t i) {
-  bool compiling = false;
-  for (size_t k = 0; k < i && k < s.size(); ++k) {
-    const std::string& n = name_of(s[k]);
-    if (n == "glNewList" && k < soft.errors.size() && soft.errors[k] == GL_NO_ERROR) compiling = true;
-    if (n == "glEndList") compiling = false;
-  }
-  return compiling;
 }
 
 // A deviation soft reported while drawing, which can only change what was drawn.
@@ -276,18 +263,6 @@ const std::vector<KnownDeviation>& known_deviations() {
          if (m.kind != "state" || !(current || material)) return false;
          const int at = vertexless_list_primitive(s, soft);
          return at >= 0 && m.call > at;
-       }},
-      // Row 54: the call's own error (Mesa compiles it and checks when the list runs) and pictures.
-      {"soft-drawpixels-in-list-not-compiled",
-       "glDrawPixels while a list compiles: Mesa compiles it, soft executes it at once and records nothing",
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         bool any = false;
-         for (size_t i = 0; i < s.size() && !any; ++i)
-           any = name_of(s[i]) == "glDrawPixels" && compiling_at(s, soft, i);
-         if (!any) return false;
-         if (m.kind == "pixels" || m.kind == "readpixels") return true;
-         return m.kind == "error" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glDrawPixels" &&
-                compiling_at(s, soft, size_t(m.call));
        }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62

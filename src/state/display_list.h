@@ -103,7 +103,14 @@ struct ListState {
   bool open = false;       // a glBegin compiled into the list, its glEnd not yet
   GLenum open_mode = 0;    // that glBegin's mode
   int vertices = 0;        // held back since the open glBegin
-  int attributes = 0;      // attributes in the held-back vertex format (bits: normal, colour, texture, edge)
+  // Mesa's list vertex store and format (vbo_save): vertices stored since it last compiled them (a
+  // flush or a wrap), whatever primitive they belong to, and the attributes in its format with the
+  // sizes of the colour and the position, kept from one primitive to the next until a flush.
+  int stored = 0;
+  int prims = 0;  // primitives begun in the store since then (a wrap leaves the one it interrupted)
+  bool refill_error = false;  // a draw filled the store: the next flush raises an error (compile_elements)
+  int attributes = 0;      // bits: normal, colour, texture, edge
+  int color_size = 0, position_size = 0;
   GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none
   GLenum mode = 0;   // GL_LIST_MODE: GL_COMPILE or GL_COMPILE_AND_EXECUTE; 0 when none
   GLuint base = 0;   // GL_LIST_BASE
@@ -134,6 +141,7 @@ struct ListState {
   bool shown = false;
   glm::dvec3 shown_normal{0, 0, 1};
   glm::dvec4 shown_color{1, 1, 1, 1};
+  static constexpr double kStoreBytes = 256 * 1024;  // Mesa's VBO_SAVE_BUFFER_SIZE, as it compares it
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
   static constexpr int kMaxNesting = 64;
 };
