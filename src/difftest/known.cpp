@@ -116,6 +116,42 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft) {
   return -1;
 }
 
+// Whether a glRenderMode(GL_FEEDBACK or GL_SELECT) comes before call `at` with no glRenderMode(GL_RENDER)
+// after it (taken or not: Mesa takes some that soft refuses).
+bool fed_back_at(const Stream& s, size_t at) {
+  bool fed = false;
+  for (size_t i = 0; i < at && i < s.size(); ++i)
+    if (is(s[i], "glRenderMode")) fed = GLenum(s[i].args[0].num) != GL_RENDER;
+  return fed;
+}
+
+// Whether a list compiled before call `at` holds a primitive with fewer vertices than its mode
+// draws: a glBegin/glEnd (glVertex, or glArrayElement with the vertex array on) or a compiled
+// glDrawArrays (its count, or no vertex array).
+bool incomplete_list_primitive(const Stream& s, const SideResult& soft, size_t at) {
+  bool compiling = false, open = false, vertex_array = false;
+  GLenum mode = 0;
+  int vertices = 0;
+  for (size_t i = 0; i < at && i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok && GLenum(s[i].args[0].num) == GL_VERTEX_ARRAY)
+      vertex_array = n == "glEnableClientState";
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = false;
+    if (n == "glEndList") compiling = false;
+    if (!compiling) continue;
+    if (n == "glBegin" && ok && !open) open = true, mode = GLenum(s[i].args[0].num), vertices = 0;
+    else if (n == "glEnd" && open) {
+      open = false;
+      if (vertices < state::fewest_vertices(mode)) return true;
+    } else if (open && (n.rfind("glVertex", 0) == 0 || (n == "glArrayElement" && vertex_array))) ++vertices;
+    else if (!open && n == "glDrawArrays" && ok &&
+             (!vertex_array || s[i].args[2].num < state::fewest_vertices(GLenum(s[i].args[0].num))))
+      return true;
+  }
+  return false;
+}
+
 // A deviation soft reported while drawing, which can only change what was drawn.
 // A deviation soft names when it draws: it explains what drawing shows (pictures, feedback, the
 // selection buffer's hit records and the count glRenderMode returns) in a stream where soft named it.
@@ -246,6 +282,17 @@ const std::vector<KnownDeviation>& known_deviations() {
        },
        true},
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
+      drawn("mesa-list-incomplete-fed-back", state::kListIncompleteFedBack),  // row 65
+      // Row 65: the crash, read from the stream (Mesa takes a glRenderMode(GL_SELECT) soft refuses
+      // without a buffer, so soft may be drawing where Mesa feeds back).
+      {"mesa-list-incomplete-fed-back-crash",
+       "Mesa 22.3 segfaults in glCallList of a list holding a primitive too short to draw, in GL_FEEDBACK or "
+       "GL_SELECT (GL: nothing drawn); soft draws nothing of it",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         if (m.kind != "crash" || m.key != "crash mesa glCallList" || m.call < 0) return false;
+         return fed_back_at(s, size_t(m.call)) && incomplete_list_primitive(s, soft, size_t(m.call));
+       },
+       true},
       // Row 55: its vertex list has no vertex, and running the list (GL_COMPILE_AND_EXECUTE or
       // glCallList) copies its attribute slots, never written, to the current values: garbage
       // such as 9.78e35 or -3.7e10 (measured), so only those values are explained.

@@ -146,7 +146,7 @@ void Context::hold_back(int kind, int size) {
   }
   if (kind < 0) {
     lists_.position_size = std::max(lists_.position_size, size);
-    if (lists_.open) ++lists_.vertices, ++lists_.stored;
+    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices;
     return;
   }
   if (kind == 2) lists_.color_size = std::max(lists_.color_size, size);
@@ -249,6 +249,10 @@ void Context::call_one_list(GLuint list) {
   if (lists_.depth >= ListState::kMaxNesting) return;
   const auto it = lists_.lists.find(list);
   if (it == lists_.lists.end()) return;
+  // Measured: a list's GL_LINES of one vertex is fed back as a line from it to itself, GL_TRIANGLES
+  // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
+  // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
+  if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
   ++lists_.depth;
   it->second.replay();
   --lists_.depth;
@@ -354,6 +358,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
   lists_.compiling_draw = false;
+  if (&l == &lists_.compiling && (count < fewest_vertices(mode) || !vertex_array_.enabled)) l.incomplete = true;
   if (format) lists_.open = false;
   keep_current ? l.record<list_end_draw>() : l.record<list_end>();
 }

@@ -33,6 +33,22 @@ inline constexpr const char* kListStripWrap =
     "odd number of its vertices: Mesa's list wraps the strip and draws other triangles around the wrap "
     "(GL_COMPILE and GL_COMPILE_AND_EXECUTE alike); soft draws the strip as sent";
 
+// Row 65 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListIncompleteFedBack =
+    "a display list holding a primitive with fewer vertices than its mode draws (a glBegin/glEnd or a compiled "
+    "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
+    "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
+
+// The fewest vertices a primitive of this mode draws anything with.
+inline int fewest_vertices(GLenum mode) {
+  switch (mode) {
+    case GL_POINTS: return 1;
+    case GL_LINES: case GL_LINE_STRIP: case GL_LINE_LOOP: return 2;
+    case GL_QUADS: case GL_QUAD_STRIP: return 4;
+    default: return 3;
+  }
+}
+
 // N floats (or doubles) by value: a pointer argument's contents, recorded.
 template <int N, typename T = GLfloat>
 struct Floats {
@@ -57,7 +73,8 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(); }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false; }
+  bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -103,6 +120,7 @@ struct ListState {
   bool open = false;       // a glBegin compiled into the list, its glEnd not yet
   GLenum open_mode = 0;    // that glBegin's mode
   int vertices = 0;        // held back since the open glBegin
+  int primitive_vertices = 0;  // compiled since the open glBegin (kListIncompleteFedBack)
   // Mesa's list vertex store and format (vbo_save): vertices stored since it last compiled them (a
   // flush or a wrap), whatever primitive they belong to, and the attributes in its format with the
   // sizes of the colour and the position, kept from one primitive to the next until a flush.

@@ -79,7 +79,8 @@ bool compiled_only(const A&... a) {
   }
   if constexpr (K == ListKind::Vertex) {
     if constexpr (same_entry<Fn, &Begin>())
-      ls.open = true, ls.vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false, ls.trailing = 0, ++ls.prims;
+      ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
+      ls.trailing = 0, ++ls.prims;
     if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
     if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
     if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
@@ -93,6 +94,7 @@ bool compiled_only(const A&... a) {
         return false;
       }
       ls.open = false;
+      if (ls.primitive_vertices < fewest_vertices(ls.open_mode)) l->incomplete = true;
     }
   }
   l->record<Fn>(a...);
@@ -116,6 +118,19 @@ bool compiled_only(const A&... a) {
   }
   if (!c->list_executes()) return true;
   if constexpr (K == ListKind::State) c->run_held_back();
+  if constexpr (K == ListKind::Material) {
+    // Outside the list's own glBegin/glEnd Mesa's compiled glMaterial executes first and then
+    // flushes what the list holds (so a held-back primitive is drawn with the new material: row
+    // 50), measured: after a wrapped primitive's glEnd the executing side leaves its glBegin at
+    // the glMaterialfv (repro list_material_flushes.txt).
+    if (!ls.open) {
+      ++ls.depth;  // executes, recording nothing
+      Fn(a...);
+      --ls.depth;
+      c->run_held_back();
+      return true;
+    }
+  }
   return false;
 }
 
