@@ -141,6 +141,10 @@ void Context::hold_back(int kind, int size) {
     // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
     // flushed the rest: the wrapped vertices are drawn without touching the current values.
     if (list_executes() && !lists_.shown) lists_.shown = true, lists_.shown_normal = normal_, lists_.shown_color = color_;
+    // The part of the primitive the wrap cut off is a primitive of its own in the list: too short to
+    // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
+    // fed back as that vertex three times before the rest; kListIncompleteFedBack).
+    if (lists_.vertices > 0 && lists_.vertices < fewest_vertices(lists_.open_mode)) lists_.compiling.incomplete = true;
     if (list_executes()) run_held_back(false);
     lists_.vertices = lists_.stored = 0, lists_.prims = 1;
   }
