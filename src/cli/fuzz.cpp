@@ -1,6 +1,7 @@
 // ffcompat fuzz: the differential tester (src/difftest). Random GL call streams run on Mesa and
 // on soft in forked children; mismatches that no known deviation explains are shrunk and printed
 // as C snippets. Exit code 2 when one is found, or a side crashed or hung.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -51,6 +52,48 @@ nlohmann::json to_json(const difftest::Summary& s, const difftest::FuzzOptions& 
           {"failed", s.failed()}};
 }
 
+// One stream call by call: what each side's glGetError said after it and what it returned, so a
+// shrunk repro can be read against Mesa without writing a program.
+void print_trace(const difftest::Stream& st, const difftest::Checked& c, bool json) {
+  auto at = [](const auto& v, size_t i, auto none) { return i < v.size() ? v[i] : none; };
+  auto status = [](const difftest::SideResult& r) {
+    return r.status == difftest::SideResult::Status::Ok ? std::string("ok")
+           : r.status == difftest::SideResult::Status::Hung ? "hung at call " + std::to_string(r.call)
+                                                              : "crashed at call " + std::to_string(r.call) + ": " + r.what;
+  };
+  nlohmann::json calls = nlohmann::json::array();
+  for (size_t i = 0; i < st.size(); ++i) {
+    const GLenum me = at(c.mesa.errors, i, GLenum(0)), se = at(c.soft.errors, i, GLenum(0));
+    const double mr = at(c.mesa.returns, i, std::nan("")), sr = at(c.soft.returns, i, std::nan(""));
+    const std::string line = difftest::to_text({st[i]}).substr(difftest::to_text({}).size());
+    if (json) {
+      calls.push_back({{"call", i}, {"text", line}, {"mesa_error", difftest::error_name(me)},
+                       {"soft_error", difftest::error_name(se)}, {"mesa_return", std::isnan(mr) ? nlohmann::json() : nlohmann::json(mr)},
+                       {"soft_return", std::isnan(sr) ? nlohmann::json() : nlohmann::json(sr)}});
+      continue;
+    }
+    std::string text = line.substr(0, line.find('\n')).substr(0, 70);
+    std::printf("%3zu %s %-70s mesa %s soft %s", i, me != se ? "*" : " ", text.c_str(), difftest::error_name(me).c_str(),
+                difftest::error_name(se).c_str());
+    if (!std::isnan(mr) || !std::isnan(sr)) std::printf("  returned mesa %g soft %g", mr, sr);
+    std::printf("\n");
+  }
+  std::vector<std::string> unexplained;
+  for (const auto& m : c.unexplained) unexplained.push_back(m.key + " (" + m.detail + ")");
+  if (json) {
+    print_json({{"calls", calls}, {"mesa", status(c.mesa)}, {"soft", status(c.soft)}, {"unexplained", unexplained}});
+    return;
+  }
+  for (const auto* side : {&c.mesa, &c.soft})
+    for (const auto& o : side->outputs) {
+      std::printf("%s output of call %d:", side == &c.mesa ? "mesa" : "soft", o.call);
+      for (size_t k = 0; k < o.values.size() && k < 24; ++k) std::printf(" %g", o.values[k]);
+      std::printf(o.values.size() > 24 ? " ...\n" : "\n");
+    }
+  std::printf("mesa %s, soft %s\n", status(c.mesa).c_str(), status(c.soft).c_str());
+  for (const auto& u : unexplained) std::printf("unexplained: %s\n", u.c_str());
+}
+
 }  // namespace
 
 void add_fuzz(CLI::App& app) {
@@ -63,6 +106,8 @@ void add_fuzz(CLI::App& app) {
   auto no_shrink = std::make_shared<bool>(false);
   auto out = std::make_shared<std::string>();
   auto replay = std::make_shared<std::string>();
+  auto one_seed = std::make_shared<uint64_t>(0);
+  auto trace = std::make_shared<bool>(false);
   cmd->add_option("--seed", o->seed, "Seed of the run: stream i is generated from (seed, i)")->capture_default_str();
   cmd->add_option("--streams", o->streams, "Streams to run at most")->capture_default_str();
   cmd->add_option("--minutes", o->minutes, "Stop after this long (0: when --streams are done)")->capture_default_str();
@@ -75,6 +120,12 @@ void add_fuzz(CLI::App& app) {
   cmd->add_flag("--list-categories", *list, "List the generator's categories and run nothing");
   cmd->add_option("--out", *out, "Write each finding as DIR/<n>-<key>.txt (replayable) and .c");
   cmd->add_option("--replay", *replay, "Run one stream from a file written by --out instead of generating");
+  cmd->add_option("--stream-seed", *one_seed,
+                  "Run the one stream generated from this stream seed (as `fuzz: unexplained: ... seed S` logs it) "
+                  "and shrink what it shows; with --no-shrink --out DIR, write it whole");
+  cmd->add_flag("--trace", *trace,
+                 "With --replay or --stream-seed: print each call with the error and value it left on Mesa and on soft "
+                 "(the mismatches are not shrunk)");
   cmd->add_flag("--json", *json, "Print {streams, mismatches_by_kind, known_deviations, crashes, hangs, findings: [{kind, key, c, repro}], ...}");
   cmd->callback([=] {
     if (*list) {
@@ -92,15 +143,25 @@ void add_fuzz(CLI::App& app) {
       return;
     }
     o->gen.categories = difftest::select_categories(*only, *exclude);
-    o->shrink = !*no_shrink;
+    o->shrink = !*no_shrink && !*trace;
     auto log = [](const std::string& line) { std::fprintf(stderr, "fuzz: %s\n", line.c_str()); };
     difftest::Summary s;
+    difftest::Stream one;
     if (!replay->empty()) {
       std::ifstream in(*replay);
       if (!in) throw std::invalid_argument("cannot read " + *replay);
       std::stringstream text;
       text << in.rdbuf();
-      s = difftest::replay(difftest::parse_text(text.str()), *o, log);
+      one = difftest::parse_text(text.str());
+    } else if (*one_seed != 0) {
+      one = difftest::generate(*one_seed, o->gen);
+    }
+    if (*trace) {
+      if (one.empty()) throw std::invalid_argument("--trace needs --replay or --stream-seed");
+      return print_trace(one, difftest::check(one, o->run), *json);
+    }
+    if (!one.empty()) {
+      s = difftest::replay(one, *o, log);
     } else {
       s = difftest::fuzz(*o, log);
     }

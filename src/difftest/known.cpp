@@ -1,7 +1,5 @@
 #include "difftest/known.h"
 
-#include <algorithm>
-
 #include "state/context.h"
 #include "state/display_list.h"
 
@@ -128,15 +126,40 @@ bool current_values(const Stream& s, const Mismatch& m) {
          });
 }
 
-// Whether call i is made while a list compiles (a glNewList soft took, its glEndList not yet).
-bool compiling_at(const Stream& s, const SideResult& soft, size_t i) {
-  bool compiling = false;
-  for (size_t k = 0; k < i && k < s.size(); ++k) {
-    const std::string& n = name_of(s[k]);
-    if (n == "glNewList" && k < soft.errors.size() && soft.errors[k] == GL_NO_ERROR) compiling = true;
+// Whether a glRenderMode(GL_FEEDBACK or GL_SELECT) comes before call `at` with no glRenderMode(GL_RENDER)
+// after it (taken or not: Mesa takes some that soft refuses).
+bool fed_back_at(const Stream& s, size_t at) {
+  bool fed = false;
+  for (size_t i = 0; i < at && i < s.size(); ++i)
+    if (is(s[i], "glRenderMode")) fed = GLenum(s[i].args[0].num) != GL_RENDER;
+  return fed;
+}
+
+// Whether a list compiled before call `at` holds a primitive with fewer vertices than its mode
+// draws: a glBegin/glEnd (glVertex, or glArrayElement with the vertex array on) or a compiled
+// glDrawArrays (its count, or no vertex array).
+bool incomplete_list_primitive(const Stream& s, const SideResult& soft, size_t at) {
+  bool compiling = false, open = false, vertex_array = false;
+  GLenum mode = 0;
+  int vertices = 0;
+  for (size_t i = 0; i < at && i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok && GLenum(s[i].args[0].num) == GL_VERTEX_ARRAY)
+      vertex_array = n == "glEnableClientState";
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = false;
     if (n == "glEndList") compiling = false;
+    if (!compiling) continue;
+    if (n == "glBegin" && ok && !open) open = true, mode = GLenum(s[i].args[0].num), vertices = 0;
+    else if (n == "glEnd" && open) {
+      open = false;
+      if (vertices < state::fewest_vertices(mode)) return true;
+    } else if (open && (n.rfind("glVertex", 0) == 0 || (n == "glArrayElement" && vertex_array))) ++vertices;
+    else if (!open && n == "glDrawArrays" && ok &&
+             (!vertex_array || s[i].args[2].num < state::fewest_vertices(GLenum(s[i].args[0].num))))
+      return true;
   }
-  return compiling;
+  return false;
 }
 
 // A deviation soft reported while drawing, which can only change what was drawn.
@@ -269,6 +292,17 @@ const std::vector<KnownDeviation>& known_deviations() {
        },
        true},
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
+      drawn("mesa-list-incomplete-fed-back", state::kListIncompleteFedBack),  // row 66
+      // Row 66: the crash, read from the stream (Mesa takes a glRenderMode(GL_SELECT) soft refuses
+      // without a buffer, so soft may be drawing where Mesa feeds back).
+      {"mesa-list-incomplete-fed-back-crash",
+       "Mesa 22.3 segfaults in glCallList of a list holding a primitive too short to draw, in GL_FEEDBACK or "
+       "GL_SELECT (GL: nothing drawn); soft draws nothing of it",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         if (m.kind != "crash" || m.key != "crash mesa glCallList" || m.call < 0) return false;
+         return fed_back_at(s, size_t(m.call)) && incomplete_list_primitive(s, soft, size_t(m.call));
+       },
+       true},
       // Row 55: its vertex list has no vertex, and running the list (GL_COMPILE_AND_EXECUTE or
       // glCallList) copies its attribute slots, never written, to the current values: garbage
       // such as 9.78e35 or -3.7e10 (measured), so only those values are explained.
@@ -288,18 +322,6 @@ const std::vector<KnownDeviation>& known_deviations() {
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
                                                   state::kListLineLoopCurrent) != soft.deviations.end();
-       }},
-      // Row 54: the call's own error (Mesa compiles it and checks when the list runs) and pictures.
-      {"soft-drawpixels-in-list-not-compiled",
-       "glDrawPixels while a list compiles: Mesa compiles it, soft executes it at once and records nothing",
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
-         bool any = false;
-         for (size_t i = 0; i < s.size() && !any; ++i)
-           any = name_of(s[i]) == "glDrawPixels" && compiling_at(s, soft, i);
-         if (!any) return false;
-         if (m.kind == "pixels" || m.kind == "readpixels") return true;
-         return m.kind == "error" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glDrawPixels" &&
-                compiling_at(s, soft, size_t(m.call));
        }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62

@@ -205,7 +205,9 @@ class Context {
   void ArrayElement(GLint i);
 
   void RasterPos(double x, double y, double z, double w);
-  void DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels);
+  // packed: a list's copy (list_image), read whatever the GL_UNPACK_* state is then.
+  void DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels, bool packed = false);
+  std::vector<GLubyte> list_image(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) const;
   void FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer);
   GLint RenderMode(GLenum mode);
   void ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels);
@@ -229,7 +231,7 @@ class Context {
   bool list_executes() const { return lists_.mode == GL_COMPILE_AND_EXECUTE; }
   DisplayList& list_held_back() { return lists_.held_back; }
   void run_held_back(bool new_format = true);  // executes the vertex-stream calls GL_COMPILE_AND_EXECUTE held back
-  void hold_back(int kind);  // a vertex-stream call is held back (kind: see compiled_only)
+  void hold_back(int kind, int size = 0);  // a vertex-stream call is held back (kind: see compiled_only; size: components)
   void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
   void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush
   void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
@@ -238,6 +240,7 @@ class Context {
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
   void drop_trailing(int kind);  // run from a list after its glEnd: those values back
   ListState& list_state() { return lists_; }
+  void compile_error(DisplayList& l, GLenum e);  // a compiled draw's error (display_list.cpp)
   void record_list_error(GLenum e);  // a compile error: recorded, and raised now in GL_COMPILE_AND_EXECUTE
   // Vertex-array draws while compiling, dereferenced (indices null: first .. first + count - 1).
   // keep_current: leave the current values as they were (a compiled draw played back); false for
@@ -247,6 +250,7 @@ class Context {
   void compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices,
                              bool keep_current = true);
   void compile_element(DisplayList& l, GLint i);
+  bool forms_format(const DisplayList& l) const;  // whether recording into l stands for Mesa's vertex store
   void begin_compiled_draw(GLenum mode);
   void end_compiled_draw();
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
@@ -611,6 +615,10 @@ class Context {
   std::vector<GLubyte> pack_bitmap(GLsizei w, GLsizei h, const GLubyte* bits) const;
 
  private:
+  struct PixelRows {  // raster_pos.cpp: where glDrawPixels finds its pixels
+    size_t row = 0, pixel = 0, skip = 0;  // bytes a row, a pixel, before the first
+  };
+  bool pixel_rows(GLsizei w, GLenum format, GLenum type, bool packed, PixelRows& out) const;
   struct BitmapLayout {  // bitmap.cpp
     size_t row, skip_rows, skip_bits;
     bool lsb_first;

@@ -123,8 +123,14 @@ void Context::drop_trailing(int kind) {
 }
 
 void Context::run_held_back(bool new_format) {
-  if (new_format) lists_.attributes = 0, lists_.shown = false;
-  lists_.vertices = 0;
+  if (new_format) lists_.attributes = 0, lists_.color_size = lists_.position_size = 0, lists_.shown = false;
+  // Measured (list_store_fills.txt): after a draw that filled the store, the next flush of a
+  // GL_COMPILE_AND_EXECUTE list (a state call, glEndList) raises GL_INVALID_OPERATION on the
+  // executing side, and nothing is recorded: glCallList of the list raises nothing, nor does a
+  // GL_COMPILE list's glEndList.
+  if (new_format && lists_.refill_error) lists_.refill_error = false, error(GL_INVALID_OPERATION);
+  lists_.vertices = lists_.stored = 0;
+  lists_.prims = new_format ? 0 : 1;
   if (lists_.held_back.empty()) return;
   ++lists_.depth;  // nothing recorded while they run
   lists_.held_back.replay();
@@ -132,36 +138,64 @@ void Context::run_held_back(bool new_format) {
   lists_.held_back.clear();
 }
 
-// An attribute that first appears after a vertex of an open primitive grows Mesa's vertex format:
-// the list wraps the primitive, and in GL_COMPILE_AND_EXECUTE the vertices so far are drawn first
-// (the primitive stays open on the executing side). Measured: every mode draws as sent but a
-// triangle strip wrapped after an odd number of vertices (kListStripWrap) and a line loop (its
-// closing segment lost, as in immediate mode: kLineLoopWrap), in both list modes.
-void Context::hold_back(int kind) {
-  if (kind < 0) {
-    if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
-    return void(++lists_.vertices);
-  }
-  if (kind == 0) {
-    if (lists_.open && lists_.vertices == 0 && lists_.attributes == 0) lists_.wrapped = false;  // a glBegin
-    return;
-  }
-  const bool joins = lists_.open && !(lists_.attributes & kind);
-  if (joins && lists_.vertices == 0 && lists_.wrapped)
+// An attribute that first appears in the list's vertex format, or grows there (a glColor4 or
+// glColor3ub after glColor3f, a glVertex3 after glVertex2), while the list's vertex store holds
+// vertices wraps the list: in GL_COMPILE_AND_EXECUTE the vertices so far are drawn first and the
+// open primitive stays open on the executing side. Measured (repros list_wrap_*.txt): the store's
+// vertices may belong to an earlier primitive of the list (glBegin, glVertex, glEnd, glBegin,
+// glNormal wraps with the second primitive open and empty), and the format is kept from one
+// primitive to the next (glNormal, glVertex, glEnd, glBegin, glVertex, glNormal does not wrap).
+// Every mode draws as sent but a triangle strip wrapped after an odd number of vertices
+// (kListStripWrap) and a line loop (its closing segment lost, as in immediate mode: kLineLoopWrap).
+// kind: a vertex (-1) or an attribute bit; size: a colour's or a position's components.
+void Context::hold_back(int kind, int size) {
+  if (kind == 0) return;
+  const bool grows = kind < 0 ? size > lists_.position_size : kind == 2 ? size > lists_.color_size : !(lists_.attributes & kind);
+  const bool known = kind < 0 ? lists_.position_size > 0 : (lists_.attributes & kind) != 0;
+  // The first position of a format wraps nothing; a wider one does, as an attribute does.
+  const bool joins = lists_.open && grows && (kind > 0 || known);
+  // An attribute joining after the open primitive wrapped, before its next vertex, replays over
+  // the pending values as the wrap itself does (list_loopback).
+  if (joins && kind > 0 && lists_.vertices == 0 && lists_.wrapped)
     lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
-  if (joins && lists_.vertices > 0) {
-    lists_.wrapped = true;
+  if (joins && lists_.stored > 0) {
     if (lists_.open_mode == GL_TRIANGLE_STRIP && lists_.vertices % 2) deviations_.insert(kListStripWrap);
-    if (lists_.open_mode == GL_LINE_LOOP) deviations_.insert(kLineLoopWrap), deviations_.insert(kListLineLoopCurrent);
+    if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices > 0)
+      deviations_.insert(kLineLoopWrap), deviations_.insert(kListLineLoopCurrent);
+    // The open primitive's rest begins in a vertex list of its own only if it had vertices before
+    // the wrap (a wrap at its first vertex, of an earlier primitive's store, leaves it whole).
+    if (lists_.vertices > 0) {
+      lists_.wrapped = true;
+      if (kind > 0)
+        lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
+    }
     // Measured: glBegin, glColor4f(0, 0, 0, 0), glVertex2f, then a first glNormal (the wrap) reads
     // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
     // flushed the rest: the wrapped vertices are drawn without touching the current values.
-    lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
     if (list_executes() && !lists_.shown) lists_.shown = true, lists_.shown_normal = normal_, lists_.shown_color = color_;
+    // The part of the primitive the wrap cut off is a primitive of its own in the list: too short to
+    // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
+    // fed back as that vertex three times before the rest; kListIncompleteFedBack).
+    if (lists_.vertices > 0 && lists_.vertices < fewest_vertices(lists_.open_mode)) lists_.compiling.incomplete = true;
     if (list_executes()) run_held_back(false);
-    lists_.vertices = 0;
+    lists_.vertices = lists_.stored = 0, lists_.prims = 1;
   }
+  if (kind < 0) {
+    if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
+    lists_.position_size = std::max(lists_.position_size, size);
+    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices;
+    return;
+  }
+  if (kind == 2) lists_.color_size = std::max(lists_.color_size, size);
   lists_.attributes |= kind;
+}
+
+// A compiled draw's error is a compile error: recorded in the list and raised at once in
+// GL_COMPILE_AND_EXECUTE (measured: glDrawArrays(mode, 0, -1) while compiling), once, though the
+// draw is also recorded into the held-back calls.
+void Context::compile_error(DisplayList& l, GLenum e) {
+  if (&l == &lists_.compiling) record_list_error(e);
+  else if (&l != &lists_.held_back) l.record<list_error>(e);
 }
 
 void Context::record_list_error(GLenum e) {
@@ -198,29 +232,32 @@ GLboolean Context::IsList(GLuint list) {
 }
 
 void Context::NewList(GLuint list, GLenum mode) {
+  // While a list compiles, Mesa's compiling dispatch refuses glNewList before it looks at the
+  // arguments (measured: glNewList(0, GL_CURRENT_NORMAL) then is GL_INVALID_OPERATION).
+  if (lists_.mode != 0) return error(GL_INVALID_OPERATION);
   if (!outside_begin_end()) return;
   if (list == 0) return error(GL_INVALID_VALUE);
   if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return error(GL_INVALID_ENUM);
-  if (lists_.mode != 0) return error(GL_INVALID_OPERATION);
   lists_.index = list;
   lists_.mode = mode;
   lists_.compiling.clear();
   lists_.held_back.clear();
-  lists_.open = false, lists_.vertices = 0, lists_.attributes = 0, lists_.had_vertex = false, lists_.trailing = 0;
-  lists_.shown = false;
+  lists_.open = false, lists_.vertices = lists_.stored = 0, lists_.attributes = 0, lists_.had_vertex = false,
+  lists_.trailing = 0, lists_.color_size = lists_.position_size = 0;
+  lists_.shown = false, lists_.refill_error = false;
 }
 
 void Context::EndList() {
   // In GL_COMPILE_AND_EXECUTE the executing side can be inside glBegin/glEnd only because the list's
   // own primitive wrapped (hold_back): the vertices so far were drawn and the primitive left open.
-  // Measured against Mesa: inside the list's still open glBegin, glEndList is taken without an error
-  // and the executing side stays inside its primitive; after the list's glEnd (still held back), Mesa
-  // raises GL_INVALID_OPERATION but ends the list all the same, and the held-back calls close the
-  // primitive (repro list_wrap_end_list.txt).
+  // glEndList flushes the rest and raises nothing, after the list's glEnd or inside its still open
+  // glBegin (which the executing side then stays inside until the next glEnd). Measured against
+  // Mesa (repro list_wrap_end_list.txt, State/DisplayLists.LitFanCompileAndExecute): the
+  // GL_INVALID_OPERATION a stream finds at glEndList after the list's glEnd is the one the
+  // glGetError before it recorded, inside the executing side's glBegin, as Mesa's does.
   const bool wrapped = in_begin_ && lists_.mode == GL_COMPILE_AND_EXECUTE;
   if (!wrapped && !outside_begin_end()) return;
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
-  if (wrapped && !lists_.open) error(GL_INVALID_OPERATION);
   run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
@@ -249,6 +286,10 @@ void Context::call_one_list(GLuint list) {
   if (lists_.depth >= ListState::kMaxNesting) return;
   const auto it = lists_.lists.find(list);
   if (it == lists_.lists.end()) return;
+  // Measured: a list's GL_LINES of one vertex is fed back as a line from it to itself, GL_TRIANGLES
+  // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
+  // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
+  if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
   ++lists_.depth;
   it->second.replay();
   --lists_.depth;
@@ -331,13 +372,38 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   GLenum e = GL_NO_ERROR;
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
-  if (e != GL_NO_ERROR) return l.record<list_error>(e);
+  if (e != GL_NO_ERROR) return compile_error(l, e);
   if (count == 0) return;
+  // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
+  // store, so the elements grow the list's vertex format as calls do (hold_back).
+  const bool format = forms_format(l);
+  if (format) {
+    // Mesa makes room for the draw's vertices first: past its store's size (256 Ki bytes, counted
+    // with the format as it is) and with a primitive already stored, it compiles what it holds
+    // (drawn at once in GL_COMPILE_AND_EXECUTE, a wrapped primitive ended; measured: a
+    // glDrawArrays of 2^20 vertices after a wrapped glBegin/glEnd finds the executing side outside
+    // it). The draws of the generator's huge category are the ones this meets.
+    const int format_floats = lists_.position_size + ((lists_.attributes & 1) ? 3 : 0) + lists_.color_size +
+                              ((lists_.attributes & 4) ? 4 : 0) + ((lists_.attributes & 8) ? 1 : 0);
+    if (lists_.prims > 0 && (double(lists_.stored) + double(count)) * format_floats * 4 > ListState::kStoreBytes) {
+      if (list_executes()) run_held_back(false), lists_.refill_error = true;
+      lists_.stored = 0;
+    }
+    lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, lists_.wrapped = false, ++lists_.prims;
+  }
   keep_current ? l.record<list_begin_draw>(mode) : l.record<list_begin>(mode);
   lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
   lists_.compiling_draw = false;
+  if (&l == &lists_.compiling && (count < fewest_vertices(mode) || !vertex_array_.enabled)) l.incomplete = true;
+  if (format) lists_.open = false;
   keep_current ? l.record<list_end_draw>() : l.record<list_end>();
+}
+
+// The list whose recording stands for Mesa's vertex store: the held-back calls in
+// GL_COMPILE_AND_EXECUTE (a wrap draws them), the list itself in GL_COMPILE.
+bool Context::forms_format(const DisplayList& l) const {
+  return &l == (list_executes() ? &lists_.held_back : &lists_.compiling);
 }
 
 
@@ -361,7 +427,7 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
   // Mesa's compiled glDrawElements calls a bad index type GL_INVALID_VALUE (measured), where the
   // draw itself says GL_INVALID_ENUM.
   else if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) e = GL_INVALID_VALUE;
-  if (e != GL_NO_ERROR) return l.record<list_error>(e);
+  if (e != GL_NO_ERROR) return compile_error(l, e);
   if (!indices) return;
   std::vector<GLuint> names(static_cast<size_t>(count));
   for (GLsizei k = 0; k < count; ++k)
@@ -379,20 +445,25 @@ void Context::compile_element(DisplayList& l, GLint i) {
   // Inside the list's own glBegin its values count as glNormal, glColor and glVertex do for the
   // trailing attributes (list_trailing).
   const bool inside = compiled && lists_.open;
+  // Inside a primitive (the list's own or a compiled draw's) the element enters the vertex store.
+  const bool format = lists_.open && forms_format(l);
   if (normal_array_.enabled && normal_array_.pointer) {
     const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
     if (inside) list_trailing(l, 1);
+    if (format) hold_back(1);
     l.record<list_normal>(n.x, n.y, n.z);
     if (outside) mark_list_attribute(l, 1);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     if (inside) list_trailing(l, 2);
+    if (format) hold_back(2, int(color_array_.size));
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
     if (outside) mark_list_attribute(l, 2);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
+    if (format) hold_back(-1, int(vertex_array_.size));
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
     if (inside) lists_.had_vertex = true, lists_.trailing = 0;
   }

@@ -39,6 +39,22 @@ inline constexpr const char* kListLineLoopCurrent =
     "sets the current colour and normal (and a tracked material) to zeros, alpha 1 for a 3-component colour; soft "
     "to the last values sent";
 
+// Row 66 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListIncompleteFedBack =
+    "a display list holding a primitive with fewer vertices than its mode draws (a glBegin/glEnd or a compiled "
+    "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
+    "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
+
+// The fewest vertices a primitive of this mode draws anything with.
+inline int fewest_vertices(GLenum mode) {
+  switch (mode) {
+    case GL_POINTS: return 1;
+    case GL_LINES: case GL_LINE_STRIP: case GL_LINE_LOOP: return 2;
+    case GL_QUADS: case GL_QUAD_STRIP: return 4;
+    default: return 3;
+  }
+}
+
 // N floats (or doubles) by value: a pointer argument's contents, recorded.
 template <int N, typename T = GLfloat>
 struct Floats {
@@ -63,7 +79,8 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(); }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false; }
+  bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -109,7 +126,15 @@ struct ListState {
   bool open = false;       // a glBegin compiled into the list, its glEnd not yet
   GLenum open_mode = 0;    // that glBegin's mode
   int vertices = 0;        // held back since the open glBegin
-  int attributes = 0;      // attributes in the held-back vertex format (bits: normal, colour, texture, edge)
+  int primitive_vertices = 0;  // compiled since the open glBegin (kListIncompleteFedBack)
+  // Mesa's list vertex store and format (vbo_save): vertices stored since it last compiled them (a
+  // flush or a wrap), whatever primitive they belong to, and the attributes in its format with the
+  // sizes of the colour and the position, kept from one primitive to the next until a flush.
+  int stored = 0;
+  int prims = 0;  // primitives begun in the store since then (a wrap leaves the one it interrupted)
+  bool refill_error = false;  // a draw filled the store: the next flush raises an error (compile_elements)
+  int attributes = 0;      // bits: normal, colour, texture, edge
+  int color_size = 0, position_size = 0;
   GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none
   GLenum mode = 0;   // GL_LIST_MODE: GL_COMPILE or GL_COMPILE_AND_EXECUTE; 0 when none
   GLuint base = 0;   // GL_LIST_BASE
@@ -144,6 +169,7 @@ struct ListState {
   int first_format = 0;
   glm::dvec3 shown_normal{0, 0, 1};
   glm::dvec4 shown_color{1, 1, 1, 1};
+  static constexpr double kStoreBytes = 256 * 1024;  // Mesa's VBO_SAVE_BUFFER_SIZE, as it compares it
   // Mesa's limit on glCallList inside lists being executed (GL_MAX_LIST_NESTING).
   static constexpr int kMaxNesting = 64;
 };

@@ -273,7 +273,40 @@ bool known_type(GLenum t) {
 
 }  // namespace
 
-void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
+// Unpacking (GL 2.1 section 3.6.4): rows of GL_UNPACK_ROW_LENGTH pixels (w when 0), each starting
+// at a multiple of GL_UNPACK_ALIGNMENT, after the skipped rows and pixels; a list's copy (packed)
+// is rows of w pixels one after the other. False: a format or type soft does not draw.
+bool Context::pixel_rows(GLsizei w, GLenum format, GLenum type, bool packed, PixelRows& out) const {
+  Layout layout;
+  if (!color_layout(format, layout) || (type != GL_UNSIGNED_BYTE && type != GL_FLOAT)) return false;
+  auto store = [&](GLenum p) {
+    const auto it = pixel_store_.find(p);
+    return packed || it == pixel_store_.end() ? 0 : it->second;
+  };
+  const size_t size = type == GL_FLOAT ? 4 : 1, pixel = size * size_t(layout.n);
+  const size_t row_pixels = store(GL_UNPACK_ROW_LENGTH) > 0 ? size_t(store(GL_UNPACK_ROW_LENGTH)) : size_t(w);
+  const size_t align = packed ? 1 : size_t(unpack_alignment_);
+  out.pixel = pixel;
+  out.row = size >= align ? row_pixels * pixel : (row_pixels * pixel + align - 1) / align * align;
+  out.skip = size_t(store(GL_UNPACK_SKIP_ROWS)) * out.row + size_t(store(GL_UNPACK_SKIP_PIXELS)) * pixel;
+  return true;
+}
+
+// A glDrawPixels compiled into a list keeps its image as the unpack state reads it now (GL 2.1
+// section 5.4), rows of whole pixels; empty for what soft does not draw (its error comes when the
+// list runs) and for images too big to be meant (a shrunk stream's sizes).
+std::vector<GLubyte> Context::list_image(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) const {
+  PixelRows r;
+  if (!pixels || w <= 0 || h <= 0 || double(w) * double(h) > double(1 << 22) || !pixel_rows(w, format, type, false, r))
+    return {};
+  std::vector<GLubyte> out(size_t(w) * size_t(h) * r.pixel);
+  const auto* in = static_cast<const uint8_t*>(pixels) + r.skip;
+  for (GLsizei j = 0; j < h; ++j)
+    std::memcpy(out.data() + size_t(j) * size_t(w) * r.pixel, in + size_t(j) * r.row, size_t(w) * r.pixel);
+  return out;
+}
+
+void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels, bool packed) {
   if (!outside_begin_end()) return;
   const SinkPixels through_sink(*this);  // draw_sink.cpp: soft draws into the sink's picture
   // Mesa's FLUSH_VERTICES (outside_begin_end) flushes stored vertices only where a flush was asked
@@ -317,18 +350,10 @@ void Context::DrawPixels(GLsizei w, GLsizei h, GLenum format, GLenum type, const
     return;
   }
   flush_clear();
-  // Unpacking (GL 2.1 section 3.6.4): rows of GL_UNPACK_ROW_LENGTH pixels (w when 0), each
-  // starting at a multiple of GL_UNPACK_ALIGNMENT, after the skipped rows and pixels.
-  auto store = [&](GLenum p) {
-    const auto it = pixel_store_.find(p);
-    return it == pixel_store_.end() ? 0 : it->second;
-  };
-  const size_t size = type == GL_FLOAT ? 4 : 1, pixel = size * size_t(layout.n);
-  const size_t row_pixels = store(GL_UNPACK_ROW_LENGTH) > 0 ? size_t(store(GL_UNPACK_ROW_LENGTH)) : size_t(w);
-  const size_t align = size_t(unpack_alignment_);
-  const size_t row = size >= align ? row_pixels * pixel : (row_pixels * pixel + align - 1) / align * align;
-  const auto* base = static_cast<const uint8_t*>(pixels) + size_t(store(GL_UNPACK_SKIP_ROWS)) * row +
-                     size_t(store(GL_UNPACK_SKIP_PIXELS)) * pixel;
+  PixelRows rows;
+  pixel_rows(w, format, type, packed, rows);
+  const size_t row = rows.row, pixel = rows.pixel;
+  const auto* base = static_cast<const uint8_t*>(pixels) + rows.skip;
   auto component = [&](const uint8_t* p, int k) {
     if (type == GL_UNSIGNED_BYTE) return p[k] / 255.0;
     float f;

@@ -192,7 +192,18 @@ void APIENTRY PushMatrix() { LISTABLE(PushMatrix); FWD(PushMatrix()); }
 void APIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum t, GLvoid* p) { FWD(ReadPixels(x, y, w, h, f, t, p)); }
 GLint APIENTRY RenderMode(GLenum m) { return C() ? C()->RenderMode(m) : 0; }
 void APIENTRY RasterPos2f(GLfloat x, GLfloat y) { LISTABLE(RasterPos2f, x, y); FWD(RasterPos(x, y, 0, 1)); }
-void APIENTRY DrawPixels(GLsizei w, GLsizei h, GLenum f, GLenum t, const GLvoid* p) { FWD(DrawPixels(w, h, f, t, p)); }
+// A glDrawPixels in a list: its image copied as the unpack state reads it now (Context::list_image).
+void APIENTRY PackedDrawPixels(GLsizei w, GLsizei h, GLenum f, GLenum t, PackedBits p) { FWD(DrawPixels(w, h, f, t, p.data, true)); }
+void APIENTRY DrawPixels(GLsizei w, GLsizei h, GLenum f, GLenum t, const GLvoid* p) {
+  Context* c = C();
+  if (!c) return;
+  if (DisplayList* l = c->list_recording()) {
+    const PackedBits image = l->keep(c->list_image(w, h, f, t, p));
+    if (compiled_only<ListKind::State, PackedDrawPixels>(w, h, f, t, image)) return;
+    return c->DrawPixels(w, h, f, t, image.data, true);
+  }
+  c->DrawPixels(w, h, f, t, p);
+}
 void APIENTRY Rotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z) { LISTABLE(Rotated, a, x, y, z); FWD(Rotate(a, x, y, z)); }
 // glRotatef and friends build their matrices from float arguments; the double maths after that
 // differs from Mesa's float maths by rounding only.

@@ -5,6 +5,7 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <tuple>
 #include <type_traits>
 
 #include "state/context.h"
@@ -71,12 +72,15 @@ bool compiled_only(const A&... a) {
   }
   if constexpr (same_entry<Fn, &Begin>()) {
     // A bad mode is a compile error (raised at once in GL_COMPILE_AND_EXECUTE), nothing opened:
-    // measured, glBegin(GL_CONSTANT_ATTENUATION) while compiling.
+    // measured, glBegin(GL_CONSTANT_ATTENUATION) while compiling. So is a glBegin inside the
+    // list's own open glBegin (measured: GL_INVALID_OPERATION at once in GL_COMPILE_AND_EXECUTE).
+    if (ls.open) return c->record_list_error(GL_INVALID_OPERATION), true;
     if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
   }
   if constexpr (K == ListKind::Vertex) {
     if constexpr (same_entry<Fn, &Begin>())
-      ls.open = true, ls.vertices = 0, ls.attributes = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false, ls.trailing = 0;
+      ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
+      ls.trailing = 0, ls.wrapped = false, ++ls.prims;
     if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
     if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
     if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
@@ -90,6 +94,7 @@ bool compiled_only(const A&... a) {
         return false;
       }
       ls.open = false;
+      if (ls.primitive_vertices < fewest_vertices(ls.open_mode)) l->incomplete = true;
     }
   }
   l->record<Fn>(a...);
@@ -97,12 +102,13 @@ bool compiled_only(const A&... a) {
   if constexpr (same_entry<Fn, &End>()) c->list_primitive_end(*l, trailing);
   if constexpr (K == ListKind::Vertex) {
     int kind = 0;  // what enters Mesa's vertex format: a vertex (-1), an attribute (a bit), or neither
-    if constexpr (same_entry<Fn, &VertexValues>()) kind = -1;
+    int size = 0;  // a position's or colour's components (the last argument of both)
+    if constexpr (same_entry<Fn, &VertexValues>()) kind = -1, size = int(std::get<4>(std::tie(a...)));
     if constexpr (same_entry<Fn, &NormalValues>()) kind = 1;
-    if constexpr (same_entry<Fn, &ColorValues>()) kind = 2;
+    if constexpr (same_entry<Fn, &ColorValues>()) kind = 2, size = int(std::get<4>(std::tie(a...)));
     if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
-    c->hold_back(kind);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
+    c->hold_back(kind, size);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     if constexpr (same_entry<Fn, &End>()) {
       if (c->list_executes()) c->list_primitive_end(c->list_held_back(), trailing);
@@ -112,6 +118,19 @@ bool compiled_only(const A&... a) {
   }
   if (!c->list_executes()) return true;
   if constexpr (K == ListKind::State) c->run_held_back();
+  if constexpr (K == ListKind::Material) {
+    // Outside the list's own glBegin/glEnd Mesa's compiled glMaterial executes first and then
+    // flushes what the list holds (so a held-back primitive is drawn with the new material: row
+    // 50), measured: after a wrapped primitive's glEnd the executing side leaves its glBegin at
+    // the glMaterialfv (repro list_material_flushes.txt).
+    if (!ls.open) {
+      ++ls.depth;  // executes, recording nothing
+      Fn(a...);
+      --ls.depth;
+      c->run_held_back();
+      return true;
+    }
+  }
   return false;
 }
 
