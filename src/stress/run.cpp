@@ -98,6 +98,7 @@ struct Reader {
   size_t at = 0;
   void bytes(void* p, size_t n) {
     if (n > s.size() - at) throw std::runtime_error("truncated report from the child");
+    if (n == 0) return;  // p may be an empty vector's null data(): memcpy's arguments must not be null
     std::memcpy(p, s.data() + at, n);
     at += n;
   }
