@@ -10,7 +10,6 @@
 #include <GL/gl.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 
@@ -74,9 +73,6 @@ inline uint8_t unorm8(float c) {
   const float clamped = std::min(c > 0 ? c : 0.0f, 1.0f);
   return uint8_t(std::nearbyint(clamped * 255.0f));
 }
-
-// Fragments written from a colour that was not finite before the clamp (raster.cpp).
-extern std::atomic<uint64_t> g_nonfinite_fragments;
 
 // The fragment's depth at pixel column X, row Y counted from the top: two fused multiply-adds, as
 // lp_bld_interp.c's interp_attrib_linear (llvm.fmuladd, fused on a CPU with FMA).

@@ -16,16 +16,6 @@
 
 namespace ffc::raster {
 
-// Fragments written from a non-finite colour (NaN or an infinity before the clamp): what
-// `ffcompat stress` reads to tell that no pixel was written from one (declared in
-// raster.h). The check costs three SSE instructions per fragment, no branch.
-namespace detail {
-std::atomic<uint64_t> g_nonfinite_fragments{0};
-}
-using detail::g_nonfinite_fragments;
-uint64_t nonfinite_fragments() { return g_nonfinite_fragments.load(std::memory_order_relaxed); }
-void reset_nonfinite_fragments() { g_nonfinite_fragments.store(0, std::memory_order_relaxed); }
-
 uint8_t to_unorm8(double c) {
   if (!(c > 0)) return 0;  // also NaN
   if (c >= 1) return 255;
@@ -220,13 +210,9 @@ bool sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c)
   return std::fabs(det) < 1e-4f * longest;
 }
 
-namespace {
-std::atomic<uint64_t> g_clipped_slivers{0};
-}
 void count_if_sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const State& s) {
-  if (!s.flat && sliver(a, b, c)) g_clipped_slivers.fetch_add(1, std::memory_order_relaxed);
+  if (s.counters && !s.flat && sliver(a, b, c)) s.counters->clipped_slivers.fetch_add(1, std::memory_order_relaxed);
 }
-uint64_t clipped_slivers() { return g_clipped_slivers.load(std::memory_order_relaxed); }
 
 bool back_facing_triangle(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c, const State& s) {
   // The sign of the homogeneous determinant is the window orientation whatever the w's signs.
@@ -371,7 +357,7 @@ void write_fragment(Framebuffer& fb, int x, int y, double z, const glm::dvec4& c
     if (!detail::depth_pass(s.depth_func, zi, fb.depth[i])) return;
     if (s.ops.depth_write) fb.depth[i] = zi;
   }
-  if (!std::isfinite(c.r + c.g + c.b + c.a)) g_nonfinite_fragments.fetch_add(1, std::memory_order_relaxed);
+  if (!std::isfinite(c.r + c.g + c.b + c.a)) count_nonfinite(s, 1);
   detail::write_color(s.ops, &fb.color[i * 4], c);
 }
 

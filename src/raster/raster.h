@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 
 #include <array>
+#include <atomic>
 #include <initializer_list>
 #include <cmath>
 #include <cstdint>
@@ -39,6 +40,14 @@ struct Framebuffer {
   // A new buffer's contents are undefined in GL; llvmpipe's start at 0, colour and depth alike, and
   // so do ours (a program that depth-tests without clearing then draws what it draws on Mesa).
   Framebuffer(int w, int h) : width(w), height(h), color(size_t(w) * h * 4, 0), depth(size_t(w) * h, 0) {}
+};
+
+// What a context's draws count, read by whoever asked for the draw (the stress runner, the
+// deviations a draw names). One per context, not per process: two contexts drawing at once on two
+// threads must not see each other's counts. Atomic: a draw's worker threads add to it together.
+struct Counters {
+  std::atomic<uint64_t> nonfinite_fragments{0};  // written from a non-finite colour (before the clamp)
+  std::atomic<uint64_t> clipped_slivers{0};      // smooth slivers of clipped fans set up (sliver())
 };
 
 struct State {
@@ -88,6 +97,8 @@ struct State {
   int stipple_factor = 1;
   uint16_t stipple_pattern = 0xFFFF;
   int* stipple_counter = nullptr;
+  // Where this draw's counts go (the context's); none: not counted.
+  Counters* counters = nullptr;
   // Fog, polygon offset or any of ops: triangles take the scalar row loop
   // (row_loop.h rasterize_fragment_ops).
   bool fragment_ops() const { return fog || offset_fill || ops.any(); }
@@ -183,11 +194,10 @@ using WindowPolygon = Fixed<WindowVertex, 10>;
 // llvmpipe's planes (float, from 1 / area) and soft's (double, kept in float) disagree there, each
 // leaving the vertices' range of colours (docs/deviations.md, row 63).
 bool sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c);
-// Counts the smooth slivers set up for drawing (any context of the process, as nonfinite_fragments):
-// the triangle-list path draws clipped triangles on the worker threads, and its caller names the
-// deviation when the count moved during its draw.
+// Counts a smooth sliver set up for drawing in s.counters: the triangle-list path draws clipped
+// triangles on the worker threads, and its caller names the deviation when its context's count
+// moved during its draw.
 void count_if_sliver(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const State& s);
-uint64_t clipped_slivers();
 WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, const Vertex* provoking, bool is_line,
                            bool* back_facing = nullptr, ClipTemps* feedback = nullptr);
 
@@ -250,10 +260,11 @@ void clear_band(Framebuffer& fb, const ClearRequest& c, int band);  // rows [64 
 // channels and what lies outside the box are kept. Not banded: such clears are rare.
 void clear_masked(Framebuffer& fb, const ClearRequest& c, const State::Ops& ops);
 
-// Fragments written from a non-finite colour (a NaN or an infinity in any channel before the
-// clamp), counted process-wide for the stress suite: reset, draw, read.
-uint64_t nonfinite_fragments();
-void reset_nonfinite_fragments();
+// Adds n fragments written from a non-finite colour (a NaN or an infinity in any channel before
+// the clamp) to s.counters, for the stress suite: a fresh context, draw, read.
+inline void count_nonfinite(const State& s, uint64_t n) {
+  if (n && s.counters) s.counters->nonfinite_fragments.fetch_add(n, std::memory_order_relaxed);
+}
 
 // The fragment's colour after fog (State::fog), from its interpolated fog coordinate.
 glm::dvec4 apply_fog(const glm::dvec4& c, float fog_coord, const State& s);

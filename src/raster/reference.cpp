@@ -60,7 +60,7 @@ void draw_reference(Framebuffer& fb, const Triangle& t, const State& s) {
       nonfinite += !finite;
     }
   }
-  if (nonfinite) detail::g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+  count_nonfinite(s, nonfinite);
 }
 
 }  // namespace ffc::raster

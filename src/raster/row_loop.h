@@ -194,14 +194,13 @@ inline bool is_tiny(const Triangle& t, int64_t ext_x, int64_t ext_y) {
 // Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands.
 // `planes()` fills t's planes and is called once, before the first covered pixel (most tiny
 // triangles cover none); false from it drops the triangle. Where wide_kernels(), the dispatched
-// target's kernels draw it (wide/kernels.h), else the loops below.
+// target's kernels draw it (wide/kernels.h), else the loops below. Returns the fragments it wrote
+// from a non-finite colour (the caller counts them in its State's counters).
 template <DepthMode D, typename Planes>
-void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
+uint64_t rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
   uint64_t nonfinite = 0;
   if (wide_kernels()) {
-    nonfinite = rasterize_wide(D, fb, t, depth_func, bands, PlanesRef::of(planes));
-    if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
-    return;
+    return rasterize_wide(D, fb, t, depth_func, bands, PlanesRef::of(planes));
   }
   bool ready = false;
   auto draw_span = [&](int py, int lo, int hi) {
@@ -249,20 +248,20 @@ void rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& ban
         }
         mask &= keep;
         if (!mask) continue;
-        if (!draw_span(py, t.xmin + __builtin_ctz(mask), t.xmin + 31 - __builtin_clz(mask))) return;
+        if (!draw_span(py, t.xmin + __builtin_ctz(mask), t.xmin + 31 - __builtin_clz(mask))) return nonfinite;
       }
     }
 #endif
   } else if (!for_each_row_span(t, bands, draw_span)) {  // large (and, without x86 intrinsics, small)
-    return;
+    return nonfinite;
   }
-  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+  return nonfinite;
 }
 
 // The same for a run-time depth function.
 template <typename Planes>
 void rasterize(Framebuffer& fb, Triangle& t, const State& s, const Bands& bands, Planes&& planes) {
-  with_depth_mode(s, [&](auto mode) { rasterize<decltype(mode)::value>(fb, t, s.depth_func, bands, planes); });
+  with_depth_mode(s, [&](auto mode) { count_nonfinite(s, rasterize<decltype(mode)::value>(fb, t, s.depth_func, bands, planes)); });
 }
 
 }  // namespace ffc::raster::detail

@@ -91,7 +91,7 @@ void draw_one(const List& l, const std::array<size_t, 3>& vi, const Snapped (&p)
   bool back, swapped;
   std::array<size_t, 3> order;
   if (!setup_one(l, vi, p, t, back, swapped, order)) return;
-  detail::rasterize<D>(l.fb, t, l.s.depth_func, mine, [&] { return list_planes(l, vi, t, back, swapped, order); });
+  count_nonfinite(l.s, detail::rasterize<D>(l.fb, t, l.s.depth_func, mine, [&] { return list_planes(l, vi, t, back, swapped, order); }));
 }
 
 // What every binning share kept for this thread, in primitive order: clipped triangles drawn

@@ -114,6 +114,9 @@ class Context {
   // Inline: every entry point reads it (a call per glVertex cost as much as the store it guards).
   static Context* current() { return current_; }
   static void make_current(Context* c);
+  // What this context's draws counted since it was made (raster.h Counters): its own, whatever
+  // other contexts draw on other threads meanwhile.
+  const raster::Counters& counters() const { return counters_; }
 
   // Immediate mode's stores (soft_gl_immediate.cpp): inside a glBegin(GL_TRIANGLES) whose corners
   // are kept for the triangle list (immediate_list_), with no list compiling and no sink drawing,
@@ -635,6 +638,7 @@ class Context {
  private:
   FragmentState frag_;
   mutable int stipple_counter_ = 0;  // the line stipple's position, run on along a strip (raster.h)
+  mutable raster::Counters counters_;  // every raster::State of this context counts here (raster_state)
   bool* fragment_capability(GLenum cap);  // GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_BLEND, GL_LINE_STIPPLE; else null
   int fragment_values(GLenum pname, GLdouble* out, int& normalized);  // 0 for a name not its own
   void fragment_raster_state(raster::State& rs) const;

@@ -2,6 +2,7 @@
 // of a draw or a glBegin/glEnd assembled into points, lines and triangles, clipped, culled and
 // set up for the rasterizer, or handed to feedback (feedback.cpp).
 #include <array>
+#include <atomic>
 #include <initializer_list>
 #include <vector>
 
@@ -19,6 +20,7 @@ class Assembly {
   void run();
 
  private:
+  void assemble_and_draw();
   // A triangle's temporaries: its vertices as fed back, or as handed to the clipper.
   struct Scratch {
     raster::WindowVertex inside[3];
@@ -50,6 +52,10 @@ class Assembly {
   bool reset_ = true;
   bool offset_stage_ = false;  // feedback through the offset stage of Mesa's draw module
   bool any_outside_ = false;   // a vertex of a whole primitive lies outside the view volume
+  // A smooth clipped sliver was set up (row 63). triangle() runs on the worker threads
+  // (triangles_on_threads): it only sets this flag, and run() names the deviation on the calling
+  // thread; two threads inserting into Context::deviations_ at once corrupted the set.
+  std::atomic<bool> sliver_{false};
   Scratch scratch_;
   raster::Fixed<raster::Vertex, 2> prim_;
 };
@@ -60,6 +66,11 @@ void Context::flush_primitive() {
 }
 
 void Assembly::run() {
+  assemble_and_draw();
+  if (sliver_.load(std::memory_order_relaxed)) c_.deviations_.insert(kClippedSliver);  // docs/deviations.md row 63
+}
+
+void Assembly::assemble_and_draw() {
   note_smooth();
   c_.triangles_.clear();
   if (feedback_) c_.note_texgen_in_feedback();
@@ -172,7 +183,7 @@ void Assembly::triangle(size_t i0, size_t i1, size_t i2, size_t provoking, std::
   for (size_t k = 1; k + 1 < w.size(); ++k)
     if (raster::setup(w[k], w[k + 1], w[0], rs_, t)) {
       out.push_back(t);
-      if (!rs_.flat && raster::sliver(w[k], w[k + 1], w[0])) c_.deviations_.insert(kClippedSliver);  // row 63
+      if (!rs_.flat && raster::sliver(w[k], w[k + 1], w[0])) sliver_.store(true, std::memory_order_relaxed);  // row 63
     }
 }
 

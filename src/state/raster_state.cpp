@@ -61,6 +61,7 @@ raster::State Context::raster_state() const {
   rs.point_size = point_size_;
   fog_raster_state(rs);
   fragment_raster_state(rs);
+  rs.counters = &counters_;
   return rs;
 }
 

@@ -14,8 +14,8 @@
 #include <stdexcept>
 
 #include "backends/backend.h"
+#include "backends/soft/soft_backend.h"
 #include "gl/dispatch.h"
-#include "raster/raster.h"
 #include "stress/stress.h"
 
 namespace ffc::stress {
@@ -41,12 +41,14 @@ RawRun draw_on(const Case& c, const std::string& backend_name) {
   RawRun r;
   try {
     auto backend = backends::make(backend_name);
-    raster::reset_nonfinite_fragments();
     backend->begin(c.width, c.height);
     c.draw();
     r.gl_error = glGetError();
     r.image = backend->read();
-    r.fragments = raster::nonfinite_fragments();
+    // Ours only, from the context begin() made for this picture: its count alone, whatever other
+    // contexts of the process draw meanwhile.
+    if (dynamic_cast<backends::SoftBackend*>(backend.get()) && state::Context::current())
+      r.fragments = state::Context::current()->counters().nonfinite_fragments.load();
     for (size_t size = std::max<size_t>(c.feedback_hint + 64, size_t(1) << 16);; size *= 4) {
       if (size > (size_t(1) << 30)) throw std::runtime_error("feedback: more than 2^30 values");
       r.feedback.assign(size, 0.0f);
@@ -96,6 +98,7 @@ struct Reader {
   size_t at = 0;
   void bytes(void* p, size_t n) {
     if (n > s.size() - at) throw std::runtime_error("truncated report from the child");
+    if (n == 0) return;  // p may be an empty vector's null data(): memcpy's arguments must not be null
     std::memcpy(p, s.data() + at, n);
     at += n;
   }

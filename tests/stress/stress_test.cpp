@@ -15,6 +15,7 @@
 #include "raster/raster.h"
 #include "pool/workers.h"
 #include "stress/stress.h"
+#include "counted_raster.h"
 
 namespace ffc {
 namespace {
@@ -236,30 +237,27 @@ TEST(Harness, InProcessAndIsolatedRunsAgree) {
 TEST(Harness, TheRasterCountsFragmentsFromNonFiniteColours) {
   // A zero count means something only if a NaN would be counted.
   raster::Framebuffer fb(16, 16);
-  raster::State s;
-  s.viewport = {0, 0, 16, 16};
-  s.fb_height = 16;
+  raster::Counters counts;
+  const raster::State s = test::counted_state(counts);
   raster::WindowVertex a{}, b{}, c{};
   a.pos = {1, 1, 0.5}, b.pos = {15, 2, 0.5}, c.pos = {4, 14, 0.5};
   for (auto* v : {&a, &b, &c}) v->inv_w = 1, v->color = {0.5, 0.5, 0.5, 1};
   raster::Triangle t;
   ASSERT_TRUE(raster::setup(a, b, c, s, t));
   t.c0[1] = std::numeric_limits<float>::quiet_NaN();
-  raster::reset_nonfinite_fragments();
   const std::vector<raster::Triangle> one = {t};
   pool::Workers workers(1);
   const std::vector<raster::Triangle>* list = &one;
   raster::draw_triangles(fb, &list, 1, s, workers);
-  EXPECT_GT(raster::nonfinite_fragments(), 20u);
+  EXPECT_GT(counts.nonfinite_fragments.load(), 20u);
 
-  raster::reset_nonfinite_fragments();
+  counts.nonfinite_fragments = 0;
   a.color.g = std::numeric_limits<double>::infinity();
   a.fx = 1, a.y_down = 15, b.fx = 15, b.y_down = 14;  // the position line setup reads (rows counted down)
   raster::draw_line(fb, a, b, s);
-  EXPECT_GT(raster::nonfinite_fragments(), 5u);
+  EXPECT_GT(counts.nonfinite_fragments.load(), 5u);
 
   // setup refuses planes that are not finite (here a colour of 1e39: beyond float).
-  raster::reset_nonfinite_fragments();
   a.color.g = 1e39;
   EXPECT_FALSE(raster::setup(a, b, c, s, t));
 }

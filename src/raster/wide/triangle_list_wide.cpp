@@ -30,7 +30,7 @@ template <DepthMode Mode>
 void DrawBins(const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
   uint64_t nonfinite = 0;
   for_each_binned(l, mine, in, counts, shares, [&](const std::array<size_t, 3>& vi, const Snapped (&p)[3]) { nonfinite += DrawOne<Mode>(l, mine, vi, p); });
-  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+  count_nonfinite(l.s, nonfinite);
 }
 
 #if FFCOMPAT_SETUP_GROUP
@@ -92,7 +92,7 @@ void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in
       }
     }
   }
-  if (nonfinite) g_nonfinite_fragments.fetch_add(nonfinite, std::memory_order_relaxed);
+  count_nonfinite(l.s, nonfinite);
 }
 #endif
 
