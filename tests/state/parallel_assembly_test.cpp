@@ -1,7 +1,7 @@
 // The general path's large GL_TRIANGLES draws are assembled and set up on the context's threads
 // (Assembly::triangles_on_threads). What a thread meets there is named by the calling thread once
 // they are done: the threads themselves once inserted into the context's set of deviations, two at
-// once corrupting it (a rare crash; ThreadSanitizer reports it at once: scripts/sanitize tsan).
+// once corrupting it (a rare crash; valgrind --tool=helgrind on the test reports the race: docs/testing.md).
 #include <gtest/gtest.h>
 
 #include "../clipped_sliver.h"
