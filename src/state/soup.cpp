@@ -8,10 +8,12 @@
 // which changes nothing but the time. On both threads each share of the corners has its cache
 // and its distinct corners, laid out one share after the other.
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <vector>
 
 #include "state/client_arrays.h"
+#include "pool/workers.h"
 #include "state/context.h"
 
 namespace ffc::state {
@@ -108,7 +110,8 @@ bool Context::draw_soup(GLint first, GLsizei count) {
   }
   soup_index_.resize(corners);
   soup_staged_.resize(corners * size_t(record));
-  std::vector<uint32_t> distinct(size_t(shares) + 1, 0);
+  // Distinct corners found before each share (shares <= Workers::kMax): no allocation per draw.
+  std::array<uint32_t, pool::Workers::kMax + 1> distinct{};
   const auto bounds = [&](int s) { return corners * size_t(s) / size_t(shares) / 3 * 3; };
   const Source src[3] = {source(va), source(na), source(ca)};
   // Share s: corners [bounds(s), bounds(s + 1)), its distinct ones staged from bounds(s) on.

@@ -231,6 +231,18 @@ TEST(Cli, ASceneFileThatIsAFifoOrADeviceIsRefusedNamingIt) {
 }
 
 
+// Every draw pattern, the glDrawArrays soup's repeat finding on both threads included (depth 4:
+// 15,360 corners, above kSoupParallel): nothing allocated per frame (the soup once made a vector
+// a draw).
+TEST(Cli, BenchAllocatesNothingPerFrameForEveryDrawPattern) {
+  for (const char* draw : {"elements", "arrays", "immediate"}) {
+    const Result r = ffcompat(std::string("bench --scene icosphere --depth 4 --frames 4 --block 2 --backends soft --json --draw ") + draw);
+    ASSERT_EQ(r.status, 0) << draw;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["allocations_per_frame"]["soft"], 0.0) << draw;
+  }
+}
+
 TEST(Cli, BenchReportsMediansTheRatioAndNoAllocationPerFrame) {
   const Result r = ffcompat("bench --scene icosphere --depth 3 --frames 6 --block 3 --backends mesa,soft,soft-double --json");
   ASSERT_EQ(r.status, 0);
