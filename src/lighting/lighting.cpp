@@ -135,6 +135,13 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
     const T len = glm::length(p);
     to_eye = len > 0 ? -p / len : V3<T>(0);
   }
+  // A key without the specular term (every light's specular times the material's is 0) still has
+  // it where Mesa's result shows it: Mesa's program keys on no colour, so it raises n.h to the
+  // shininess whatever the colour, and a power overflowing to infinity times the colour's 0 is a
+  // NaN, which the clamp makes 1 (docs/deviations.md, "a zero specular colour"). Since n.h <= |n|
+  // and the shininess is at most 128, only a normal longer than 2 (not normalised, or scaled by
+  // the modelview) can overflow: the term is computed for those alone, below 2 it adds a zero.
+  const bool long_normal = !S::specular(key) && glm::dot(n, n) >= kLongNormal2<T>;
   Lit<T> out;
   const int faces = S::two_side(key) ? 2 : 1;
   for (int f = 0; f < faces; ++f) {
@@ -170,7 +177,7 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];
       const T ndotl = glm::dot(nf, vp);
       V3<T> sum = amb + std::max(T(0), ndotl) * dif;  // a NaN n.L (NaN normal) drops out, as in Mesa
-      if (S::specular(key) && ndotl > 0) {
+      if ((S::specular(key) || long_normal) && ndotl > 0) {
         V3<T> h = L.half;
         if (S::local_viewer(key) || S::local(L)) {
           h = vp + to_eye;

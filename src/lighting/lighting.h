@@ -72,6 +72,12 @@ struct Prepared {
   T shininess[2] = {0, 0};
 };
 
+// The squared eye-normal length from which pow(n.h, shininess) may overflow a float (n.h <= |n|,
+// shininess <= 128: from |n| = 2 on), a little below 4 so that a rounding of n.h cannot pass it:
+// where the key has no specular term, the kernels compute it for such normals only (lighting.cpp).
+template <typename T>
+inline constexpr T kLongNormal2 = T(3.9);
+
 // Output colours of one vertex, clamped to [0,1]: primary and secondary, front and back.
 template <typename T>
 struct Lit {

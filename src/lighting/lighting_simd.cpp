@@ -128,6 +128,9 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
     cm = {hn::LoadU(d, in.c[0] + i), hn::LoadU(d, in.c[1] + i), hn::LoadU(d, in.c[2] + i)};
     cm_a = hn::LoadU(d, in.c[3] + i);
   }
+  // light_impl's long_normal (lighting.cpp): without the specular term in the key, it is computed
+  // where a lane's normal is long enough for its power to overflow (a zero where none is).
+  const bool long_normal = !Specular && !hn::AllFalse(d, hn::Ge(Dot(n, n), hn::Set(d, kLongNormal2<float>)));
   V3s to_eye{zero, zero, one};
   if (local_viewer) {
     const V3s neg{hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)};
@@ -178,7 +181,7 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
       const V3s dif = track_dif ? Mul3(Splat(d, L.ld), cm) : Splat(d, L.dif[f]);
       const V ndotl = Dot(nf, vp);
       V3s sum = Add3(amb, Scale(Max0(d, ndotl), dif));
-      if (Specular) {
+      if (Specular || long_normal) {
         const M facing = hn::And(lit, hn::Gt(ndotl, zero));
         if (!hn::AllFalse(d, facing)) {
           V3s h = Splat(d, L.half);

@@ -137,6 +137,34 @@ TEST(Lighting, EmissionAndColoursAboveOneClamp) {
   expect_rgb(s.at({0, 0, -2, 1}, {0, 0, 1}).primary[0], glm::dvec3(1, 0, 0.5 + 0.2 * 0.2));
 }
 
+// Mesa's program raises n.h to the shininess whatever the specular colour: with a normal 4.5 long
+// (a glOrtho on the modelview scaled it, GL_NORMALIZE off) 4.5^59 overflows a float, and infinity
+// times the default black specular is a NaN that clamps to 1 (fuzz seed 2026 stream 505). 4.5^58
+// does not: the term adds 0, the colour is the ambient plus the diffuse with n.L = 4.5. A unit
+// normal never overflows, and in double 4.5^128 is finite.
+TEST(Lighting, AZeroSpecularColourStillOverflowsAsMesasProgram) {
+  LightParams l[8];
+  l[0].enabled = true;
+  l[0].diffuse = {0.1, 0, 0, 1};
+  l[0].specular = glm::dvec4(1);  // GL_LIGHT0's; the material's specular is GL's black
+  MaterialParams m[2];
+  const ModelParams model;
+  const glm::vec4 p(0, 0, -1, 1), color(1);
+  const double lit_red = 0.2 * 0.2 + 4.5 * 0.1 * 0.8, ambient = 0.2 * 0.2;
+  for (const double shininess : {58.0, 59.0, 128.0}) {
+    m[0].shininess = m[1].shininess = shininess;
+    const Key key = make_key(l, m, model, false, false);
+    ASSERT_FALSE(key.specular());
+    const auto pf = prepare<float>(l, m, model, key);
+    const glm::dvec4 got = light<float>(pf, p, {0, 0, 4.5f}, color).primary[0];
+    if (shininess == 58) expect_rgb(got, {lit_red, ambient, ambient}, 1e-6);
+    else expect_rgb(got, glm::dvec3(1), 0);
+    expect_rgb(light<float>(pf, p, {0, 0, 1}, color).primary[0], {0.2 * 0.2 + 0.1 * 0.8, ambient, ambient}, 1e-6);
+    const auto pd = prepare<double>(l, m, model, key);
+    expect_rgb(light<double>(pd, glm::dvec4(p), {0, 0, 4.5}, glm::dvec4(1)).primary[0], {lit_red, ambient, ambient});
+  }
+}
+
 // Random states: every specialised kernel gives the generic kernel's colours.
 TEST(Kernels, SpecialisedAgreeWithGenericOnRandomStates) {
   std::mt19937 rng(7);
