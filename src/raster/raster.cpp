@@ -555,7 +555,9 @@ void draw_solid_line(Framebuffer& fb, const WindowVertex& a, const WindowVertex&
   const float dx = ax - bx, dy = ay - by;
   const float area = dx * dx + dy * dy;
   if (area == 0 || !std::isfinite(area)) return;
-  const float fwidth = std::max(1.0f, s.line_width);
+  // Mesa's state tracker clamps the width to llvmpipe's aliased range [1, 255]; a NaN passes its
+  // clamp, and llvmpipe draws it 1 wide as std::max(1, NaN) gives here.
+  const float fwidth = std::min(std::max(1.0f, s.line_width), 255.0f);
   const int64_t half = (fwidth >= 0 ? int64_t(fwidth + 0.5f) : 1) * 256 / 2;  // util_iround(width) * 256 / 2
   const float x1diff = ax - std::floor(ax) - 0.5f, y1diff = ay - std::floor(ay) - 0.5f;
   float x2diff = bx - std::floor(bx) - 0.5f, y2diff = by - std::floor(by) - 0.5f;

@@ -180,6 +180,27 @@ TEST(Lines, WideMatchMesa) {
                                       << " in colour; first: " << t.first;
 }
 
+// Mesa's state tracker clamps the width to llvmpipe's aliased range [1, 255] (a NaN passes and
+// draws 1 wide): a horizontal line 100 pixels below the framebuffer, inside a viewport that
+// reaches there, shows the clamp in how far up its width reaches. Before, soft drew nothing for
+// an infinite or 1e30 width (the whole-pixel conversion overflowed; fuzz seed 31337 stream 135).
+TEST(Lines, WidthsOutsideTheRangeClampAsMesa) {
+  Tally t;
+  for (const float width : {200.0f, 255.0f, 255.4f, 256.0f, 300.0f, 1e30f, INFINITY, NAN, 0.4f}) {
+    compare(t, fmt("width %.9g, a line at window y %g", width, -100.25), [&] {
+      glViewport(-200, -200, 464, 464);
+      glLineWidth(width);
+      glBegin(GL_LINES);
+      glVertex2f(-0.5f, (200.0f - 100.25f) / 232 - 1);
+      glVertex2f(0.7f, (200.0f - 100.25f) / 232 - 1);
+      glEnd();
+      glViewport(0, 0, kSize, kSize);
+    }, 0);
+  }
+  EXPECT_EQ(t.coverage + t.colour, 0) << t.coverage << " of " << t.cases << " differ in coverage, " << t.colour
+                                      << " in colour; first: " << t.first;
+}
+
 // Quads, quad strips and polygons inside the view volume, smooth with a colour per vertex and
 // flat: the split decides which colours meet inside, and for a concave quad which pixels are drawn.
 TEST(Polygons, PicturesMatchMesa) {
