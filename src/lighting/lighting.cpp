@@ -84,6 +84,9 @@ Prepared<T> prepare(const LightParams (&lights)[8], const MaterialParams (&mat)[
     }
     p.k0 = T(l.constant_attenuation), p.k1 = T(l.linear_attenuation), p.k2 = T(l.quadratic_attenuation);
     p.attenuated = p.local && (p.k0 != 1 || p.k1 != 0 || p.k2 != 0);
+    const auto finite = [](const V3<T>& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    p.finite = finite(p.la) && finite(p.ld) && finite(p.ls);
+    for (int f = 0; f < 2; ++f) p.finite = p.finite && finite(p.amb[f]) && finite(p.dif[f]) && finite(p.spe[f]);
   }
   return c;
 }
@@ -170,8 +173,10 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       }
       if (S::spot(L)) {
         const T cos_angle = glm::dot(-vp, L.spot_dir);
-        if (cos_angle < L.spot_cos) continue;  // outside the cone: no contribution at all
-        att *= power(std::max(T(0), cos_angle), L.spot_exp);  // max(0, NaN) is 0, as in Mesa
+        // Outside the cone Mesa's program multiplies the light's terms by a spot factor of 0 rather
+        // than leaving them out: the same wherever they are finite, a NaN (clamped to 1) where one
+        // is not, such as a specular power overflowing for a long normal. max(0, NaN) is 0, as in Mesa.
+        att *= cos_angle < L.spot_cos ? T(0) : power(std::max(T(0), cos_angle), L.spot_exp);
       }
       const V3<T> amb = track_amb ? L.la * cm : L.amb[f];
       const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];

@@ -57,6 +57,7 @@ struct PreparedLight {
   T spot_cos = -1, spot_exp = 0;
   T k0 = 1, k1 = 0, k2 = 0;
   bool local = false, spot = false, attenuated = false;
+  bool finite = true;  // every colour above finite (a kernel may skip what it multiplies by 0)
 };
 
 template <typename T>

@@ -128,9 +128,6 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
     cm = {hn::LoadU(d, in.c[0] + i), hn::LoadU(d, in.c[1] + i), hn::LoadU(d, in.c[2] + i)};
     cm_a = hn::LoadU(d, in.c[3] + i);
   }
-  // light_impl's long_normal (lighting.cpp): without the specular term in the key, it is computed
-  // where a lane's normal is long enough for its power to overflow (a zero where none is).
-  const bool long_normal = !Specular && !hn::AllFalse(d, hn::Ge(Dot(n, n), hn::Set(d, kLongNormal2<float>)));
   V3s to_eye{zero, zero, one};
   if (local_viewer) {
     const V3s neg{hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)};
@@ -161,7 +158,6 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
       const bool spot = Kind == 0 && L.spot;
       V3s vp = Splat(d, L.pos);
       V att = one;
-      M lit = hn::Eq(zero, zero);  // the lanes this light reaches (inside its cone)
       if (local) {
         V dist;
         vp = UnitOrZero(d, V3s{hn::Sub(vp.x, p.x), hn::Sub(vp.y, p.y), hn::Sub(vp.z, p.z)}, &dist);
@@ -173,16 +169,20 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
       if (spot) {
         const V3s neg{hn::Neg(vp.x), hn::Neg(vp.y), hn::Neg(vp.z)};
         const V cos_angle = Dot(neg, Splat(d, L.spot_dir));
-        lit = hn::Not(hn::Lt(cos_angle, hn::Set(d, L.spot_cos)));
-        if (hn::AllFalse(d, lit)) continue;
-        att = hn::Mul(att, PowLanes(d, Max0(d, cos_angle), L.spot_exp));
+        const M lit = hn::Not(hn::Lt(cos_angle, hn::Set(d, L.spot_cos)));
+        // Outside the cone every term is multiplied by 0 (light_impl): nothing to add unless a
+        // term is not finite, which only these can make.
+        if (hn::AllFalse(d, lit) && L.finite && !color_material && hn::AllTrue(d, hn::IsFinite(att)) &&
+            hn::AllFalse(d, hn::Ge(Dot(n, n), hn::Set(d, kLongNormal2<float>))))
+          continue;
+        att = hn::Mul(att, hn::IfThenElseZero(lit, PowLanes(d, Max0(d, cos_angle), L.spot_exp)));
       }
       const V3s amb = track_amb ? Mul3(Splat(d, L.la), cm) : Splat(d, L.amb[f]);
       const V3s dif = track_dif ? Mul3(Splat(d, L.ld), cm) : Splat(d, L.dif[f]);
       const V ndotl = Dot(nf, vp);
       V3s sum = Add3(amb, Scale(Max0(d, ndotl), dif));
-      if (Specular || long_normal) {
-        const M facing = hn::And(lit, hn::Gt(ndotl, zero));
+      if (Specular) {
+        const M facing = hn::Gt(ndotl, zero);
         if (!hn::AllFalse(d, facing)) {
           V3s h = Splat(d, L.half);
           if (local_viewer || local) h = UnitOrZero(d, Add3(vp, to_eye));
@@ -192,7 +192,7 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
           else sum = Select(facing, Add3(sum, s), sum);
         }
       }
-      prim = Select(lit, Add3(prim, Scale(att, sum)), prim);
+      prim = Add3(prim, Scale(att, sum));
     }
     const V prgba[4] = {Saturate(d, prim.x), Saturate(d, prim.y), Saturate(d, prim.z), Saturate(d, alpha)};
     const V srgba[4] = {Saturate(d, sec.x), Saturate(d, sec.y), Saturate(d, sec.z), zero};
@@ -208,9 +208,27 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
   }
 }
 
+// Whether a normal of the columns is long enough for n.h to the shininess to overflow a float
+// (lighting.h's kLongNormal2).
+HWY_INLINE bool AnyLongNormal(D d, const SoaIn& in, size_t count) {
+  const V limit = hn::Set(d, kLongNormal2<float>);
+  M any = hn::FirstN(d, 0);
+  for (size_t i = 0; i < count; i += hn::Lanes(d)) {
+    const V3s n{hn::LoadU(d, in.n[0] + i), hn::LoadU(d, in.n[1] + i), hn::LoadU(d, in.n[2] + i)};
+    any = hn::Or(any, hn::And(hn::FirstN(d, count - i), hn::Ge(Dot(n, n), limit)));  // padding lanes not
+  }
+  return !hn::AllFalse(d, any);
+}
+
 template <bool TwoSide, bool Specular, unsigned Kind>
 void LightColumns(const Prepared<float>& c, const SoaIn& in, size_t count, const SoaOut& out) {
   const D d;
+  // light_impl's long_normal (lighting.cpp): a key without the specular term still computes it
+  // where a normal may overflow its power. The kernel with the term gives the same colours
+  // elsewhere (its colour is 0: a finite power adds a zero), so a batch holding such a normal
+  // takes it, and the kernels without the term keep no code for it.
+  if constexpr (!Specular)
+    if (AnyLongNormal(d, in, count)) return LightColumns<TwoSide, true, Kind>(c, in, count, out);
   // Copies: the stores to the columns could alias the caller's structs (the compiler would load
   // every column's pointer again for each store).
   const SoaIn columns_in = in;

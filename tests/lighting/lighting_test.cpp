@@ -165,6 +165,24 @@ TEST(Lighting, AZeroSpecularColourStillOverflowsAsMesasProgram) {
   }
 }
 
+// Outside a spot light's cone Mesa's program multiplies the light's terms by 0 rather than leaving
+// them out: the same for finite terms, but 0 times an overflowing specular power is a NaN, white.
+TEST(Lighting, OutsideTheConeAnOverflowingPowerStillShows) {
+  LightParams l[8];
+  l[0].enabled = true;
+  l[0].diffuse = l[0].specular = glm::dvec4(1);
+  l[0].position = {0, 0, 0, 1};
+  l[0].spot_cutoff = 10;  // pointing down -z; the vertex below sits 90 degrees off the axis
+  MaterialParams m[2];
+  m[0].shininess = m[1].shininess = 60;
+  const ModelParams model;
+  const Key key = make_key(l, m, model, false, false);
+  const auto pf = prepare<float>(l, m, model, key);
+  const glm::vec4 p(0, -1, 0, 1), color(1);  // the light at (0, 1, 0) from the vertex: n.L > 0
+  expect_rgb(light<float>(pf, p, {0, 1, 0}, color).primary[0], glm::dvec3(0.2 * 0.2), 1e-7);  // ambient only
+  expect_rgb(light<float>(pf, p, {0, 9, 0}, color).primary[0], glm::dvec3(1), 0);  // n.h = 9/sqrt(2)
+}
+
 // Random states: every specialised kernel gives the generic kernel's colours.
 TEST(Kernels, SpecialisedAgreeWithGenericOnRandomStates) {
   std::mt19937 rng(7);
