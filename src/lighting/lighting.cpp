@@ -182,15 +182,22 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
       const V3<T> dif = track_dif ? L.ld * cm : L.dif[f];
       const T ndotl = glm::dot(nf, vp);
       V3<T> sum = amb + std::max(T(0), ndotl) * dif;  // a NaN n.L (NaN normal) drops out, as in Mesa
-      if ((S::specular(key) || long_normal) && ndotl > 0) {
-        V3<T> h = L.half;
-        if (S::local_viewer(key) || S::local(L)) {
-          h = vp + to_eye;
-          const T hl = glm::length(h);
-          h = hl > 0 ? h / hl : V3<T>(0);
+      if (S::specular(key) || long_normal) {
+        // LIT's specular factor: the power where n.L > 0, else 0. Mesa's program multiplies the
+        // colour by it either way, so a colour that is not finite (a tracked colour of inf) shows
+        // as a NaN even where the light is behind the face.
+        T factor = 0;
+        if (ndotl > 0) {
+          V3<T> h = L.half;
+          if (S::local_viewer(key) || S::local(L)) {
+            h = vp + to_eye;
+            const T hl = glm::length(h);
+            h = hl > 0 ? h / hl : V3<T>(0);
+          }
+          factor = power(std::max(T(0), glm::dot(nf, h)), c.shininess[f]);
         }
         const V3<T> spe = track_spe ? L.ls * cm : L.spe[f];
-        const V3<T> s = power(std::max(T(0), glm::dot(nf, h)), c.shininess[f]) * spe;
+        const V3<T> s = factor * spe;
         if (S::separate_specular(key))
           sec += att * s;
         else

@@ -107,7 +107,9 @@ constexpr unsigned kAmbient = 0x1200, kDiffuse = 0x1201, kSpecular = 0x1202, kEm
 // One vector of vertices at offset i. The shape's template arguments are the terms that change
 // the code's structure (as lighting.cpp's StaticShape); the rest are uniform per call and read
 // once per vector, a branch per light and vector rather than per vertex.
-template <bool TwoSide, bool Specular, unsigned Kind>
+// LongOnly: a key without the specular term whose batch holds a long normal (LightColumns): the
+// term is computed for the lanes whose normal is long alone, as light_impl decides per vertex.
+template <bool TwoSide, bool Specular, unsigned Kind, bool LongOnly = false>
 HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size_t i, const SoaOut& out) {
   const Key& key = c.key;
   const bool local_viewer = key.local_viewer(), color_material = key.color_material(),
@@ -182,14 +184,23 @@ HWY_INLINE void LightVector(D d, const Prepared<float>& c, const SoaIn& in, size
       const V ndotl = Dot(nf, vp);
       V3s sum = Add3(amb, Scale(Max0(d, ndotl), dif));
       if (Specular) {
-        const M facing = hn::Gt(ndotl, zero);
-        if (!hn::AllFalse(d, facing)) {
-          V3s h = Splat(d, L.half);
-          if (local_viewer || local) h = UnitOrZero(d, Add3(vp, to_eye));
+        // light_impl's factor: the power where n.L > 0, else 0, times the colour either way. Where
+        // no lane faces the light the product is 0 unless the colour or the attenuation (a NaN
+        // position) is not finite.
+        const M want = LongOnly ? hn::Ge(Dot(n, n), hn::Set(d, kLongNormal2<float>)) : hn::Eq(zero, zero);
+        const M facing = hn::And(want, hn::Gt(ndotl, zero));
+        const bool any_facing = !hn::AllFalse(d, facing);
+        if (any_facing || (!LongOnly && (track_spe || !L.finite || !hn::AllTrue(d, hn::IsFinite(att))))) {
+          V factor = zero;
+          if (any_facing) {
+            V3s h = Splat(d, L.half);
+            if (local_viewer || local) h = UnitOrZero(d, Add3(vp, to_eye));
+            factor = hn::IfThenElseZero(facing, PowLanes(d, Max0(d, Dot(nf, h)), c.shininess[f]));
+          }
           const V3s spe = track_spe ? Mul3(Splat(d, L.ls), cm) : Splat(d, L.spe[f]);
-          const V3s s = Scale(PowLanes(d, Max0(d, Dot(nf, h)), c.shininess[f]), spe);
-          if (separate) sec = Select(facing, Add3(sec, Scale(att, s)), sec);
-          else sum = Select(facing, Add3(sum, s), sum);
+          const V3s s = Scale(factor, spe);
+          if (separate) sec = Select(want, Add3(sec, Scale(att, s)), sec);
+          else sum = Select(want, Add3(sum, s), sum);
         }
       }
       prim = Add3(prim, Scale(att, sum));
@@ -220,20 +231,19 @@ HWY_INLINE bool AnyLongNormal(D d, const SoaIn& in, size_t count) {
   return !hn::AllFalse(d, any);
 }
 
-template <bool TwoSide, bool Specular, unsigned Kind>
+template <bool TwoSide, bool Specular, unsigned Kind, bool LongOnly = false>
 void LightColumns(const Prepared<float>& c, const SoaIn& in, size_t count, const SoaOut& out) {
   const D d;
   // light_impl's long_normal (lighting.cpp): a key without the specular term still computes it
-  // where a normal may overflow its power. The kernel with the term gives the same colours
-  // elsewhere (its colour is 0: a finite power adds a zero), so a batch holding such a normal
-  // takes it, and the kernels without the term keep no code for it.
+  // where a normal may overflow its power. A batch holding such a normal takes a kernel with the
+  // term for those lanes (LongOnly), so the kernels without the term keep no code for it.
   if constexpr (!Specular)
-    if (AnyLongNormal(d, in, count)) return LightColumns<TwoSide, true, Kind>(c, in, count, out);
+    if (AnyLongNormal(d, in, count)) return LightColumns<TwoSide, true, Kind, true>(c, in, count, out);
   // Copies: the stores to the columns could alias the caller's structs (the compiler would load
   // every column's pointer again for each store).
   const SoaIn columns_in = in;
   const SoaOut columns_out = out;
-  for (size_t i = 0; i < count; i += hn::Lanes(d)) LightVector<TwoSide, Specular, Kind>(d, c, columns_in, i, columns_out);
+  for (size_t i = 0; i < count; i += hn::Lanes(d)) LightVector<TwoSide, Specular, Kind, LongOnly>(d, c, columns_in, i, columns_out);
 }
 
 using Columns = void (*)(const Prepared<float>&, const SoaIn&, size_t, const SoaOut&);

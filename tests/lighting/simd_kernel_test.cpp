@@ -111,7 +111,7 @@ TEST(SimdKernel, EveryTargetGivesTheScalarKernelsBits) {
                 << t << " trial " << trial << " vertex " << v << " face " << f << " component " << k << ": "
                 << want[v].primary[f][k] << " vs " << got[v].primary[f][k];
             ASSERT_TRUE(same_bits(want[v].secondary[f][k], got[v].secondary[f][k]))
-                << t << " trial " << trial << " vertex " << v << " secondary face " << f << " component " << k;
+                << t << " trial " << trial << " vertex " << v << " secondary face " << f << " component " << k << ": " << want[v].secondary[f][k] << " vs " << got[v].secondary[f][k];
           }
       compared += count;
     }
