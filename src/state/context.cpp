@@ -32,7 +32,7 @@ bool Context::outside_begin_end() {
   if (in_begin_) error(GL_INVALID_OPERATION);
   // Nearly every call that checks this is one where Mesa flushes the vertices it keeps after
   // glEnd (FLUSH_VERTICES), emptying the pending current values (see update_color_material).
-  else list_flush_pending(), flush_vertices();
+  else flush_vertices();
   return !in_begin_;
 }
 

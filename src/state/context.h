@@ -226,7 +226,6 @@ class Context {
   void CallList(GLuint list);
   void CallLists(GLsizei n, GLenum type, const void* lists);
   void call_one_list(GLuint list);
-  void begin_list_calls();  // the outermost glCallList(s) begins
   void end_list_calls();  // the outermost glCallList(s) ends: a pending normal or colour reaches the state
   void ListBase(GLuint base);
   // Not GL: the list that calls are recorded into now (null when they only execute), and whether
@@ -238,16 +237,7 @@ class Context {
   void hold_back(int kind, int size = 0);  // a vertex-stream call is held back (kind: see compiled_only; size: components)
   void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
   void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush
-  // Mesa's vertex lists in a list being compiled: one opens with a primitive in the store, closes at
-  // a flush or a wrap (open: its last primitive left open); run, they flush and copy as Mesa's do.
-  void open_list_node(bool draw);
-  void close_list_node(bool open);
-  void flush_list_store(bool open = false);  // a call that flushes the store compiles: the vertex list closes, the format resets
-  void compiled_call_list();  // a glCallList or glCallLists compiles
-  void list_node_start();
-  void list_node_end(bool copy, bool open, int kinds, bool vertices);
-  void apply_pending();  // the pending values reach the state (Mesa copies its vbo's values to the current ones)
-  void list_flush_pending();  // a call run from a list flushes Mesa's stored vertices
+  void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took

@@ -56,14 +56,11 @@ void list_pending_attribute(int kind) {
 // pending normal over it. glCallList flushes before it runs, so the pending normal lives from its
 // glNormal to the end of the outermost glCallList or glCallLists; soft puts it back there. A glColor
 // does the same (list_color_pending.txt).
-void Context::mark_list_attribute(DisplayList& l, int kind) {
-  l.record<list_pending_attribute>(kind);
-  if (&l == &lists_.compiling) lists_.sent_outside |= kind;
-}
+void Context::mark_list_attribute(DisplayList& l, int kind) { l.record<list_pending_attribute>(kind); }
 
 void Context::keep_pending(int kind) {
   if (!lists_.calling) return;  // GL_COMPILE_AND_EXECUTE's own calls: measured to agree already
-  lists_.pending |= kind, lists_.need_update = true;
+  lists_.pending |= kind;
   if (kind == 1) lists_.pending_normal = normal_;
   if (kind == 2) lists_.pending_color = color_;  // its alpha as the vbo's colour size left it
 }
@@ -76,93 +73,25 @@ void list_snapshot_last_vertex() {
 void list_drop_trailing(int kind) {
   if (Context* c = Context::current()) c->drop_trailing(kind);
 }
-void replay_node_start() {
-  if (Context* c = Context::current()) c->list_node_start();
-}
-void replay_node_end(bool copy, bool open, int kinds, bool vertices) {
-  if (Context* c = Context::current()) c->list_node_end(copy, open, kinds, vertices);
+void list_loopback_attributes(int kinds, int kind, bool first_format) {
+  if (Context* c = Context::current()) c->list_loopback(kinds, kind, first_format);
 }
 }  // namespace
 
-// Mesa's vertex lists (vbo_save_api.c, vbo_save_draw.c, main/dlist.c, read in Mesa 22.3's source).
-// Compiling, the vertex-stream calls fill a store; at each flush (a call compiled as an opcode: a
-// state call, a glNormal or glColor outside glBegin/glEnd, glCallList, glEndList) or wrap (the
-// vertex format grows while the store holds vertices) what it holds becomes one vertex list of the
-// display list. Running the list, each vertex list first flushes Mesa's immediate-mode vbo the way
-// a draw does (FLUSH_FOR_DRAW: the flush NeedFlush asks for, nothing while Mesa is inside
-// glBegin/glEnd), is drawn, and then copies its last vertex's attributes to the current values
-// (playback_copy_to_current), but only where its format holds an attribute besides the position,
-// its last primitive came from glBegin (a compiled glDrawArrays or glDrawElements sets
-// no_current_update) and no wrap left it an attribute without a known value (dangling); that copy
-// also leaves Mesa inside glBegin/glEnd when its last primitive is open (a wrap), so the next flush
-// does nothing. A glNormal or glColor the list runs outside its glBegin/glEnd goes to the
-// immediate-mode vbo and is pending there (keep_pending): the first flush (FLUSH_UPDATE_CURRENT)
-// copies it to the current values and leaves NeedFlush asking for a flush of stored vertices
-// (vbo_exec_FlushVertices_internal sets it to ~FLUSH_UPDATE_CURRENT); the next one of those copies it
-// again and forgets it. A wrap whose new attribute was not sent outside glBegin/glEnd in the list
-// since glNewList or its last glCallList, with vertices to copy into the new vertex list, marks it
-// dangling, and so does a glEndList or glCallList inside the list's glBegin/glEnd: at glEndList every
-// vertex list of the list then replays through immediate mode (loopback), where each vertex sends
-// its format's values over the pending ones. Repros list_normal_pending.txt,
-// list_wrap_replaces_pending.txt, list_pending_flushed_by_vertex_lists.txt,
-// list_draw_in_begin_keeps_current.txt.
-void Context::open_list_node(bool draw) {
-  if (!lists_.node) {
-    lists_.compiling.record<replay_node_start>();
-    lists_.node = true, lists_.node_dangling = false, lists_.node_vertices = 0;
-  }
-  lists_.node_draw = draw, lists_.node_prim = 0;
-}
-
-void Context::close_list_node(bool open) {
-  if (!lists_.node) return;
-  const bool copy = !lists_.node_draw && !lists_.node_dangling && lists_.attributes != 0;
-  lists_.compiling.record<replay_node_end>(copy, open, lists_.attributes & 3, lists_.node_vertices > 0);
-  lists_.node = false;
-}
-
-void Context::flush_list_store(bool open) {
-  close_list_node(open);
-  // GL_COMPILE_AND_EXECUTE resets the format where it executes what it held back (run_held_back).
-  if (!list_executes()) lists_.attributes = 0, lists_.color_size = lists_.position_size = 0, lists_.stored = 0, lists_.prims = 0;
-}
-
-void Context::compiled_call_list() {
-  // Inside the list's glBegin/glEnd Mesa's dlist_fallback compiles what the store holds as dangling.
-  if (lists_.open && lists_.node) lists_.node_dangling = lists_.loopback = true;
-  flush_list_store(lists_.open);
-  lists_.sent_outside = 0;  // invalidate_saved_current_state
-}
-
-void Context::apply_pending() {
-  if (lists_.pending & 1) normal_ = lists_.pending_normal;
-  if (lists_.pending & 2) color_ = lists_.pending_color;
-}
-
-void Context::list_node_start() {
-  if (!lists_.calling || lists_.replay_loopback) return;
-  if (!lists_.mesa_inside && (lists_.stored_bit || lists_.need_update)) {
-    apply_pending();
-    if (lists_.stored_bit) lists_.pending = 0, lists_.stored_bit = lists_.need_update = false;
-    else lists_.need_update = false, lists_.stored_bit = true;
-  }
-  lists_.node_normal = normal_, lists_.node_color = color_;
-}
-
-void Context::list_node_end(bool copy, bool open, int kinds, bool vertices) {
-  if (!lists_.calling) return;
-  if (lists_.replay_loopback) {
-    if (vertices) lists_.pending &= ~kinds;
-    return;
-  }
-  if (!copy) normal_ = lists_.node_normal, color_ = lists_.node_color;
-  else lists_.mesa_inside = open;
-}
-
-void Context::list_flush_pending() {
-  if (!lists_.calling || lists_.replay_loopback || !lists_.stored_bit || lists_.mesa_inside) return;
-  apply_pending();
-  lists_.pending = 0, lists_.stored_bit = lists_.need_update = false;
+// Measured against Mesa (repro list_wrap_replaces_pending.txt): a list holding glColor4f(0, 0, 0,
+// 0) outside its glBegin/glEnd, then glBegin, glVertex, glColor4f(0, 0, 0, 1), glVertex, glEnd
+// reads back alpha 1 after glCallList, not the pending 0 (list_color_pending.txt's rule): the
+// colour first appearing after a vertex wraps Mesa's list, and the rest of the primitive, which
+// does not begin in its own vertex list, is replayed through immediate mode. That replay takes
+// the pending values first and leaves the last vertex's values of the attributes it holds, those
+// in the format at the wrap; an attribute outside it (a pending colour when a normal wrapped)
+// stays pending. Measured too, and taken as found (the mechanism not traced): where the wrapping
+// attribute is itself pending and the primitive's first vertex already had an attribute
+// (glNormal, glVertex, then glColor), every pending value stays. An attribute that joins after the
+// wrap but before the next vertex counts as wrapping again (Mesa's store holds the kept vertices).
+void Context::list_loopback(int kinds, int kind, bool first_format) {
+  if (!lists_.calling || ((lists_.pending & kind) && first_format)) return;
+  lists_.pending &= ~kinds;
 }
 
 // Measured against Mesa, call by call (repro list_trailing_normal.txt): a glNormal or glColor
@@ -209,22 +138,6 @@ void Context::run_held_back(bool new_format) {
   lists_.held_back.clear();
 }
 
-namespace {
-// The vertices of an open primitive of n vertices that Mesa copies into the next vertex list at a
-// wrap (vbo_copy_vertices).
-int copied_vertices(GLenum mode, int n) {
-  switch (mode) {
-    case GL_POINTS: return 0;
-    case GL_LINES: return n % 2;
-    case GL_TRIANGLES: return n % 3;
-    case GL_QUADS: return n % 4;
-    case GL_LINE_STRIP: return std::min(n, 1);
-    case GL_TRIANGLE_STRIP: case GL_QUAD_STRIP: return n < 2 ? n : 2 + n % 2;
-    default: return std::min(n, 2);  // a line loop, a fan, a polygon
-  }
-}
-}  // namespace
-
 // An attribute that first appears in the list's vertex format, or grows there (a glColor4 or
 // glColor3ub after glColor3f, a glVertex3 after glVertex2), while the list's vertex store holds
 // vertices wraps the list: in GL_COMPILE_AND_EXECUTE the vertices so far are drawn first and the
@@ -241,21 +154,21 @@ void Context::hold_back(int kind, int size) {
   const bool known = kind < 0 ? lists_.position_size > 0 : (lists_.attributes & kind) != 0;
   // The first position of a format wraps nothing; a wider one does, as an attribute does.
   const bool joins = lists_.open && grows && (kind > 0 || known);
-  // Mesa's store holds the vertices a wrap copied too: a growth before the next vertex wraps again.
-  if (joins && lists_.node && lists_.node_vertices > 0) {
-    const int copied = lists_.open ? copied_vertices(lists_.open_mode, lists_.node_prim) : 0;
-    const bool dangling = kind > 0 && !(lists_.attributes & kind) && copied > 0 && !(lists_.sent_outside & kind);
-    close_list_node(lists_.open);
-    open_list_node(lists_.node_draw);
-    lists_.node_prim = lists_.node_vertices = copied;
-    if (dangling) lists_.node_dangling = lists_.loopback = true;
-  }
+  // An attribute joining after the open primitive wrapped, before its next vertex, replays over
+  // the pending values as the wrap itself does (list_loopback).
+  if (joins && kind > 0 && lists_.vertices == 0 && lists_.wrapped)
+    lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
   if (joins && lists_.stored > 0) {
     if (lists_.open_mode == GL_TRIANGLE_STRIP && lists_.vertices % 2) deviations_.insert(kListStripWrap);
     if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices > 0)
       deviations_.insert(kLineLoopWrap), deviations_.insert(kListLineLoopCurrent);
     // The open primitive's rest begins in a vertex list of its own only if it had vertices before
     // the wrap (a wrap at its first vertex, of an earlier primitive's store, leaves it whole).
+    if (lists_.vertices > 0) {
+      lists_.wrapped = true;
+      if (kind > 0)
+        lists_.compiling.record<list_loopback_attributes>((lists_.attributes | kind) & 3, kind, lists_.first_format != 0);
+    }
     // Measured: glBegin, glColor4f(0, 0, 0, 0), glVertex2f, then a first glNormal (the wrap) reads
     // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
     // flushed the rest: the wrapped vertices are drawn without touching the current values.
@@ -268,8 +181,9 @@ void Context::hold_back(int kind, int size) {
     lists_.vertices = lists_.stored = 0, lists_.prims = 1;
   }
   if (kind < 0) {
+    if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
     lists_.position_size = std::max(lists_.position_size, size);
-    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices, ++lists_.node_prim, ++lists_.node_vertices;
+    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices;
     return;
   }
   if (kind == 2) lists_.color_size = std::max(lists_.color_size, size);
@@ -331,7 +245,6 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.open = false, lists_.vertices = lists_.stored = 0, lists_.attributes = 0, lists_.had_vertex = false,
   lists_.trailing = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = false, lists_.refill_error = false;
-  lists_.node = lists_.loopback = false, lists_.sent_outside = 0;
 }
 
 void Context::EndList() {
@@ -345,10 +258,6 @@ void Context::EndList() {
   const bool wrapped = in_begin_ && lists_.mode == GL_COMPILE_AND_EXECUTE;
   if (!wrapped && !outside_begin_end()) return;
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
-  // Inside the list's glBegin/glEnd Mesa compiles the store's primitive as dangling (vbo_save_EndList).
-  if (lists_.open && lists_.node) lists_.node_dangling = lists_.loopback = true;
-  close_list_node(lists_.open);
-  lists_.compiling.loopback = lists_.loopback;
   run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
@@ -360,23 +269,16 @@ void Context::EndList() {
 
 void Context::CallList(GLuint list) {
   if (lists_.calling) return call_one_list(list);
-  begin_list_calls();
+  lists_.calling = true, lists_.pending = 0;
   call_one_list(list);
   end_list_calls();
-}
-
-// glCallList's FLUSH_CURRENT leaves NeedFlush asking for a flush of stored vertices where Mesa's
-// vbo held values (its format not empty) or vertices.
-void Context::begin_list_calls() {
-  lists_.calling = true, lists_.pending = 0, lists_.need_update = lists_.mesa_inside = false;
-  lists_.stored_bit = vertices_kept_ || color_size_ > 0 || normal_in_format_;
 }
 
 void Context::end_list_calls() {
   // The colour reaches the state (and a tracked material) at soft's next flush, as Mesa's does.
   if (lists_.pending & 1) normal_ = lists_.pending_normal;
   if (lists_.pending & 2) color_ = lists_.pending_color;
-  lists_.calling = lists_.mesa_inside = false, lists_.pending = 0;
+  lists_.calling = false, lists_.pending = 0;
 }
 
 void Context::call_one_list(GLuint list) {
@@ -388,12 +290,9 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
-  const bool loopback = lists_.replay_loopback;
-  lists_.replay_loopback = it->second.loopback;
   ++lists_.depth;
   it->second.replay();
   --lists_.depth;
-  lists_.replay_loopback = loopback;
 }
 
 namespace {
@@ -429,13 +328,13 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   if (n == 0 || !lists) return;
   // Compiled, the names are copied now and the list base read when the list runs.
   if (DisplayList* l = list_recording()) {
-    compiled_call_list();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
   }
   const bool outermost = !lists_.calling;
-  if (outermost) begin_list_calls();
+  lists_.calling = true;
+  if (outermost) lists_.pending = 0;
   const GLuint base = lists_.base;
   for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
   if (outermost) end_list_calls();
@@ -474,15 +373,6 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
   if (e != GL_NO_ERROR) return compile_error(l, e);
-  // Mesa begins the draw's primitive in its store even for no vertex (save_DrawArrays), and its glEnd
-  // ends the list's own open primitive too: what follows compiles as outside glBegin/glEnd.
-  if (&l == &lists_.compiling) {
-    open_list_node(true);
-    if (lists_.open && !lists_.compiling_draw) {
-      l.record<list_end>();
-      lists_.open = false, lists_.had_vertex = false, lists_.trailing = 0;
-    }
-  }
   if (count == 0) return;
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
   // store, so the elements grow the list's vertex format as calls do (hold_back).
@@ -499,7 +389,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
       if (list_executes()) run_held_back(false), lists_.refill_error = true;
       lists_.stored = 0;
     }
-    lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, ++lists_.prims;
+    lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, lists_.wrapped = false, ++lists_.prims;
   }
   keep_current ? l.record<list_begin_draw>(mode) : l.record<list_begin>(mode);
   lists_.compiling_draw = true;

@@ -79,11 +79,8 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false; }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false; }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
-  // Mesa replays the list's vertex lists through immediate mode (vbo_save's loopback), not as draws
-  // that copy their last vertex to the current values (display_list.cpp, Context::close_list_node).
-  bool loopback = false;
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -166,21 +163,10 @@ struct ListState {
   // GL_COMPILE_AND_EXECUTE: a wrap drew the list's primitive so far, but glGet reads the current
   // values from before it until the rest is flushed (display_list.cpp, Context::hold_back).
   bool shown = false;
-  // Compiling, Mesa's vertex lists (display_list.cpp, Context::open_list_node): whether the store
-  // holds one (a primitive begun since the last flush or wrap), whether its last primitive came from a
-  // compiled draw (Mesa's no_current_update), whether a wrap left it a "dangling" attribute, the
-  // vertices it holds and those of its open primitive (the vertices a wrap copies included), the
-  // attributes sent outside glBegin/glEnd since glNewList or the last
-  // compiled glCallList (Mesa's ListState.ActiveAttribSize), and whether the list replays by loopback.
-  bool node = false, node_draw = false, node_dangling = false, loopback = false;
-  int node_vertices = 0, node_prim = 0, sent_outside = 0;
-  // Running, Mesa's immediate-mode flush state for the pending values (Context::list_node_start):
-  // NeedFlush's FLUSH_UPDATE_CURRENT and FLUSH_STORED_VERTICES, whether a vertex list left Mesa
-  // inside glBegin/glEnd, whether the list running replays by loopback, and the current values at the
-  // start of the vertex list running.
-  bool need_update = false, stored_bit = false, mesa_inside = false, replay_loopback = false;
-  glm::dvec3 node_normal{0, 0, 1};
-  glm::dvec4 node_color{1, 1, 1, 1};
+  // Compiling, for the rest of a wrapped primitive (display_list.cpp, Context::list_loopback): whether
+  // the open primitive wrapped, and the attributes in the format at its first vertex.
+  bool wrapped = false;
+  int first_format = 0;
   glm::dvec3 shown_normal{0, 0, 1};
   glm::dvec4 shown_color{1, 1, 1, 1};
   static constexpr double kStoreBytes = 256 * 1024;  // Mesa's VBO_SAVE_BUFFER_SIZE, as it compares it

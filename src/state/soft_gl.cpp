@@ -18,7 +18,6 @@ void APIENTRY ArrayElement(GLint i) {
   Context* c = C();
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
-    if (i >= 0 && !c->list_state().open) c->flush_list_store();  // its calls compile as opcodes there
     if (i >= 0) c->compile_element(*l, i);
     if (!c->list_executes() || i < 0) return;
     if (c->list_state().open) return c->compile_element(c->list_held_back(), i);  // held back
@@ -226,7 +225,6 @@ void APIENTRY CallList(GLuint l) {
   Context* c = C();
   if (!c) return;
   if (DisplayList* rec = c->list_recording()) {
-    c->compiled_call_list();
     rec->record<CallListRecorded>(l);
     if (!c->list_executes()) return;
     if (!c->list_state().open) c->run_held_back();

@@ -57,14 +57,11 @@ bool compiled_only(const A&... a) {
     c->record_list_error(GL_INVALID_OPERATION);
     return true;
   }
-  // A call compiled as an opcode outside the list's glBegin/glEnd flushes Mesa's store first
-  // (SAVE_FLUSH_VERTICES): the vertex list so far closes (display_list.cpp, Context::open_list_node).
-  constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
-  if (!ls.open && (K != ListKind::Vertex || !same_entry<Fn, &Begin>())) c->flush_list_store();
   // Outside the list's own glBegin/glEnd a vertex-stream call other than glBegin and glEnd compiles
   // as a state call does (Mesa swaps its vertex format out there: "compiled as opcodes"), so in
   // GL_COMPILE_AND_EXECUTE it flushes what was held back and executes at once (measured: glNormal3d
   // then glGet of GL_CURRENT_NORMAL; repro list_attribute_outside_begin.txt).
+  constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
   if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
     l->record<Fn>(a...);
     if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1);
@@ -81,11 +78,9 @@ bool compiled_only(const A&... a) {
     if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
   }
   if constexpr (K == ListKind::Vertex) {
-    if constexpr (same_entry<Fn, &Begin>()) {
-      c->open_list_node(false);
+    if constexpr (same_entry<Fn, &Begin>())
       ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
-      ls.trailing = 0, ++ls.prims;
-    }
+      ls.trailing = 0, ls.wrapped = false, ++ls.prims;
     if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
     if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
     if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
@@ -102,6 +97,9 @@ bool compiled_only(const A&... a) {
       if (ls.primitive_vertices < fewest_vertices(ls.open_mode)) l->incomplete = true;
     }
   }
+  l->record<Fn>(a...);
+  [[maybe_unused]] const int trailing = ls.had_vertex ? ls.trailing : 0;  // what glEnd drops (Context::list_trailing)
+  if constexpr (same_entry<Fn, &End>()) c->list_primitive_end(*l, trailing);
   if constexpr (K == ListKind::Vertex) {
     int kind = 0;  // what enters Mesa's vertex format: a vertex (-1), an attribute (a bit), or neither
     int size = 0;  // a position's or colour's components (the last argument of both)
@@ -110,14 +108,7 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &ColorValues>()) kind = 2, size = int(std::get<4>(std::tie(a...)));
     if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
-    // In GL_COMPILE too: the list's own wraps are named there (display_list.cpp); before the call is
-    // recorded, so that a wrap's vertex lists close and open before it runs.
-    c->hold_back(kind, size);
-  }
-  l->record<Fn>(a...);
-  [[maybe_unused]] const int trailing = ls.had_vertex ? ls.trailing : 0;  // what glEnd drops (Context::list_trailing)
-  if constexpr (same_entry<Fn, &End>()) c->list_primitive_end(*l, trailing);
-  if constexpr (K == ListKind::Vertex) {
+    c->hold_back(kind, size);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     if constexpr (same_entry<Fn, &End>()) {
       if (c->list_executes()) c->list_primitive_end(c->list_held_back(), trailing);
