@@ -79,8 +79,11 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false; }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false; }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
+  // Mesa replays the list's vertex lists through immediate mode (vbo_save's UseLoopback: display_list.cpp,
+  // Context::mark_loopback), where a compiled draw's values become current.
+  bool loopback = false;
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -134,16 +137,27 @@ struct ListState {
   int prims = 0;  // primitives begun in the store since then (a wrap leaves the one it interrupted)
   bool refill_error = false;  // a draw filled the store: the next flush raises an error (compile_elements)
   int attributes = 0;      // bits: normal, colour, texture, edge
+  // Vertices of the open primitive a wrap copied into the next vertex list (Mesa's copied.nr), and
+  // the attributes compiled outside the list's glBegin since glNewList or a compiled glCallList
+  // (Mesa's ListState.ActiveAttribSize): bits as `attributes`.
+  int wrap_copies = 0;
+  int outside_attributes = 0;
+  int replaying_loopback = 0;  // lists being replayed through immediate mode (DisplayList::loopback)
+  // GL_COMPILE_AND_EXECUTE: the store's last primitive is a GL_LINE_LOOP ended in it, and the values
+  // of its first vertex as the held-back calls ran (display_list.cpp, Context::run_held_back).
+  bool closing_loop = false;
+  glm::dvec3 loop_first_normal{0, 0, 1};
+  glm::dvec4 loop_first_color{1, 1, 1, 1};
   int color_size = 0, position_size = 0;
   GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none
   GLenum mode = 0;   // GL_LIST_MODE: GL_COMPILE or GL_COMPILE_AND_EXECUTE; 0 when none
   GLuint base = 0;   // GL_LIST_BASE
   int depth = 0;     // lists being executed, one inside another
   GLuint max_name = 0;  // the largest name the table has held (glGenLists gives out the next)
-  // The current values before a compiled draw, put back after it.
-  glm::dvec3 kept_normal{0, 0, 1};
-  glm::dvec4 kept_color{1, 1, 1, 1};
-  glm::vec4 kept_texcoord{0, 0, 0, 1};
+  // Compiling: a vertex list is open in the list (recorded Context::node_begins), and whether its
+  // last primitive begun is a compiled draw (Mesa's no_current_update).
+  bool node_open = false;
+  bool node_draw = false;
   // A glNormal or glColor a list runs outside its own glBegin/glEnd goes through Mesa's
   // immediate-mode vbo and stays pending there: a later primitive of the list writes its last values
   // to the state, and the next flush (a glGet, a glBegin) copies the pending ones over them
