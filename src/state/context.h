@@ -259,6 +259,8 @@ class Context {
   void split_list_node();           // ... and its open primitive goes on in the next (a wrap)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw);        // run from a list: it ends; a last primitive drawn from arrays copies nothing
+  void node_splits(bool draw);      // run from a list: a wrap ends it inside a primitive
+  void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
 
   // Texture coordinates, the edge flag, glRect, glHint, glInterleavedArrays (attributes.cpp).

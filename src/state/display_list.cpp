@@ -41,6 +41,12 @@ void list_node_begins() {
 void list_node_ends(bool draw) {
   if (Context* c = Context::current()) c->node_ends(draw);
 }
+void list_stray_end() {
+  if (Context* c = Context::current()) c->stray_end();
+}
+void list_node_split(bool draw) {
+  if (Context* c = Context::current()) c->node_splits(draw);
+}
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
@@ -171,10 +177,10 @@ void Context::run_held_back(bool new_format) {
   lists_.closing_loop = false;
   if (new_format) lists_.wrap_copies = 0;
   if (new_format) lists_.attributes = 0, lists_.color_size = lists_.position_size = 0, lists_.shown = false;
-  // Measured (list_store_fills.txt): after a draw that filled the store, the next flush of a
-  // GL_COMPILE_AND_EXECUTE list (a state call, glEndList) raises GL_INVALID_OPERATION on the
-  // executing side, and nothing is recorded: glCallList of the list raises nothing, nor does a
-  // GL_COMPILE list's glEndList.
+  // Measured (list_store_fills.txt): after a draw that filled the store and joined the primitive
+  // restarted there (compile_elements), the next flush of a GL_COMPILE_AND_EXECUTE list (a state
+  // call, glEndList) raises GL_INVALID_OPERATION on the executing side; glCallList raises it only
+  // for a list replayed through immediate mode (list_stray_end), a GL_COMPILE list's glEndList never.
   if (new_format && lists_.refill_error) lists_.refill_error = false, error(GL_INVALID_OPERATION);
   lists_.vertices = lists_.stored = 0;
   lists_.prims = new_format ? 0 : 1;
@@ -435,6 +441,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
   // store, so the elements grow the list's vertex format as calls do (hold_back).
   const bool format = forms_format(l);
+  bool merged = false;
   if (format) {
     // Mesa makes room for the draw's vertices first: past its store's size (256 Ki bytes, counted
     // with the format as it is) and with a primitive already stored, it compiles what it holds
@@ -443,8 +450,17 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     // it). The draws of the generator's huge category are the ones this meets.
     const int format_floats = lists_.position_size + ((lists_.attributes & 1) ? 3 : 0) + lists_.color_size +
                               ((lists_.attributes & 4) ? 4 : 0) + ((lists_.attributes & 8) ? 1 : 0);
+    // The next vertex list then begins with the store's last primitive restarted, empty and without
+    // its glBegin (wrap_filled_vertex), and Mesa joins the draw to it where the modes are the same
+    // and join (vbo_merge_draws): the draw is then a primitive without a glBegin, whose glEnd,
+    // replayed through immediate mode, raises GL_INVALID_OPERATION on the executing side: at the
+    // next flush of a GL_COMPILE_AND_EXECUTE list (measured: list_store_fills.txt) and when a list
+    // replayed so (DisplayList::loopback) runs (measured: glCallList of such a list raises it, of
+    // one without the wrap nothing; repro list_store_fills_loopback.txt).
     if (lists_.prims > 0 && (double(lists_.stored) + double(count)) * format_floats * 4 > ListState::kStoreBytes) {
-      if (list_executes()) run_held_back(false), lists_.refill_error = true;
+      merged = lists_.open_mode == mode &&
+               (mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS);
+      if (list_executes()) run_held_back(false), lists_.refill_error = merged;
       lists_.stored = 0;
       split_list_node();
     }
@@ -459,6 +475,11 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (&l == &lists_.compiling && (count < fewest_vertices(mode) || !vertex_array_.enabled)) l.incomplete = true;
   if (format) lists_.open = false, lists_.closing_loop = list_executes() && mode == GL_LINE_LOOP;
   l.record<list_end>();
+  if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
+}
+
+void Context::stray_end() {
+  if (lists_.replaying_loopback > 0 && !in_begin_) error(GL_INVALID_OPERATION);
 }
 
 // The list whose recording stands for Mesa's vertex store: the held-back calls in
@@ -488,16 +509,23 @@ void Context::end_list_node() {
   if (lists_.node_open) lists_.compiling.record<list_node_ends>(lists_.node_draw), lists_.node_open = false;
 }
 
+// A wrap ends a vertex list inside a primitive, which goes on in the next with the same
+// no_current_update: one drawn from arrays leaves the values from before both (measured: a compiled
+// glDrawArrays whose first element's position grows the format after another draw, lit: seed 4242
+// stream 701 shrunk), so nothing is put back in the middle of the primitive; one from glBegin copies
+// its values so far, the start of the next.
 void Context::split_list_node() {
-  if (!lists_.node_open) return;
-  end_list_node();
-  start_list_node(lists_.node_draw);  // the interrupted primitive restarts, its no_current_update kept
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw);
 }
 
 void Context::node_begins() { node_values_ = current_values(); }
 
 void Context::node_ends(bool draw) {
   if (draw && lists_.replaying_loopback == 0) restore(node_values_);
+}
+
+void Context::node_splits(bool draw) {
+  if (!draw) node_values_ = current_values();
 }
 
 void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices) {
