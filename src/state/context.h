@@ -260,6 +260,8 @@ class Context {
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw);        // run from a list: it ends; a last primitive drawn from arrays copies nothing
   void node_splits(bool draw);      // run from a list: a wrap ends it inside a primitive
+  void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
+  void close_store();               // the store is compiled into a vertex list: its repeats counted
   void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
 

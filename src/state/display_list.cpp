@@ -233,8 +233,8 @@ void Context::hold_back(int kind, int size) {
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
     if (lists_.vertices > 0 && lists_.vertices < fewest_vertices(lists_.open_mode)) lists_.compiling.incomplete = true;
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
+    split_list_node();  // the vertex list before the wrap is compiled first, then marked
     if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
-    split_list_node();
     if (list_executes()) run_held_back(false);
     lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies;
   }
@@ -304,6 +304,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.trailing = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
+  lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
 void Context::EndList() {
@@ -319,6 +320,7 @@ void Context::EndList() {
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
   if (lists_.open) mark_loopback();  // vbo_save_EndList inside the list's glBegin
   end_list_node();
+  lists_.compiling.reads_deduplicated = lists_.compiling.loopback && lists_.deduplicated;
   run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
@@ -351,6 +353,7 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
+  if (it->second.reads_deduplicated) deviations_.insert(kListLoopbackDeduplicated);
   const int loopback = it->second.loopback ? 1 : 0;
   ++lists_.depth, lists_.replaying_loopback += loopback;
   it->second.replay();
@@ -390,10 +393,10 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   if (n == 0 || !lists) return;
   // Compiled, the names are copied now and the list base read when the list runs.
   if (DisplayList* l = list_recording()) {
+    if (lists_.open) mark_loopback();  // as glCallList (soft_gl.cpp)
     end_list_node();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
-    lists_.outside_attributes = 0;  // as glCallList (soft_gl.cpp)
-    if (lists_.open) mark_loopback();
+    lists_.outside_attributes = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
   }
@@ -507,6 +510,34 @@ void Context::start_list_node(bool draw) {
 
 void Context::end_list_node() {
   if (lists_.node_open) lists_.compiling.record<list_node_ends>(lists_.node_draw), lists_.node_open = false;
+  close_store();
+}
+
+// Mesa's compiler keeps only the distinct vertices of a vertex list (one index each) unless the list
+// is already marked for loopback, which replays the vertices by their first positions in that buffer.
+// Measured (repro list_loopback_deduplicated.txt): a GL_COMPILE list's glDrawArrays(GL_LINES) of nine
+// positions, then glBegin(GL_LINES) and a glVertex3 left open at glEndList, draws other lines than
+// sent where a position repeats among the first eight (all nine distinct, or only the ninth, unused,
+// repeating: as sent). Named, not modelled.
+void Context::store_vertex(int kind, const glm::dvec4& v) {
+  if (kind == 1) lists_.store_normal = glm::dvec3(v);
+  if (kind == 2) lists_.store_color = v;
+  if (kind >= 0 || lists_.store_repeats) return;
+  if (lists_.store_vertices.size() >= 4096) return void(lists_.store_repeats = true);  // taken as repeating
+  std::array<uint32_t, 11> key{};
+  auto put = [&](int at, double x) {
+    const float f = float(x);
+    std::memcpy(&key[size_t(at)], &f, sizeof f);
+  };
+  for (int k = 0; k < 4; ++k) put(k, v[k]);
+  for (int k = 0; k < 3 && (lists_.attributes & 1); ++k) put(4 + k, lists_.store_normal[k]);
+  for (int k = 0; k < 4 && (lists_.attributes & 2); ++k) put(7 + k, lists_.store_color[k]);
+  if (!lists_.store_vertices.insert(key).second) lists_.store_repeats = true;
+}
+
+void Context::close_store() {
+  if (lists_.store_repeats && !lists_.compiling.loopback) lists_.deduplicated = true;
+  lists_.store_vertices.clear(), lists_.store_repeats = false;
 }
 
 // A wrap ends a vertex list inside a primitive, which goes on in the next with the same
@@ -516,6 +547,7 @@ void Context::end_list_node() {
 // its values so far, the start of the next.
 void Context::split_list_node() {
   if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw);
+  close_store();
 }
 
 void Context::node_begins() { node_values_ = current_values(); }
@@ -558,20 +590,20 @@ void Context::compile_element(DisplayList& l, GLint i) {
   if (normal_array_.enabled && normal_array_.pointer) {
     const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
     if (inside) list_trailing(l, 1);
-    if (format) hold_back(1);
+    if (format) hold_back(1), store_vertex(1, n);
     l.record<list_normal>(n.x, n.y, n.z);
     if (outside) mark_list_attribute(l, 1);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     if (inside) list_trailing(l, 2);
-    if (format) hold_back(2, int(color_array_.size));
+    if (format) hold_back(2, int(color_array_.size)), store_vertex(2, c);
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
     if (outside) mark_list_attribute(l, 2);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
-    if (format) hold_back(-1, int(vertex_array_.size));
+    if (format) hold_back(-1, int(vertex_array_.size)), store_vertex(-1, v);
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
     if (format) note_loop_first_vertex(l);
     if (inside) lists_.had_vertex = true, lists_.trailing = 0;

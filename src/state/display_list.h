@@ -19,8 +19,11 @@
 
 #include <cstring>
 #include <glm/glm.hpp>
+#include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
+#include <set>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -44,6 +47,13 @@ inline constexpr const char* kListIncompleteFedBack =
     "a display list holding a primitive with fewer vertices than its mode draws (a glBegin/glEnd or a compiled "
     "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
     "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
+
+// Row 67 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListLoopbackDeduplicated =
+    "a display list replayed through immediate mode (a glBegin left open at glEndList, a wrap copying vertices "
+    "while an attribute joins) holding a vertex list compiled before that with a vertex repeated: Mesa kept only "
+    "its distinct vertices and replays the vertices by their first positions, so later ones are others or never "
+    "sent (drawn, fed back, made current); soft replays the vertices sent";
 
 // The fewest vertices a primitive of this mode draws anything with.
 inline int fewest_vertices(GLenum mode) {
@@ -79,11 +89,12 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false; }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, reads_deduplicated = false; }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   // Mesa replays the list's vertex lists through immediate mode (vbo_save's UseLoopback: display_list.cpp,
   // Context::mark_loopback), where a compiled draw's values become current.
   bool loopback = false;
+  bool reads_deduplicated = false;  // and a vertex list of it lost repeated vertices (kListLoopbackDeduplicated)
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -158,6 +169,13 @@ struct ListState {
   // last primitive begun is a compiled draw (Mesa's no_current_update).
   bool node_open = false;
   bool node_draw = false;
+  // Compiling: the vertices of the store since it was last compiled, as Mesa's compiler compares them
+  // (the bits of the position, normal and colour as floats), whether one repeats, and whether a vertex
+  // list with a repeat was compiled before the list was marked for loopback (kListLoopbackDeduplicated).
+  std::set<std::array<uint32_t, 11>> store_vertices;
+  bool store_repeats = false, deduplicated = false;
+  glm::dvec3 store_normal{0, 0, 1};
+  glm::dvec4 store_color{1, 1, 1, 1};
   // A glNormal or glColor a list runs outside its own glBegin/glEnd goes through Mesa's
   // immediate-mode vbo and stays pending there: a later primitive of the list writes its last values
   // to the state, and the next flush (a glGet, a glBegin) copies the pending ones over them

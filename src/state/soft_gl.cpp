@@ -226,12 +226,12 @@ void APIENTRY CallList(GLuint l) {
   Context* c = C();
   if (!c) return;
   if (DisplayList* rec = c->list_recording()) {
-    c->end_list_node();
-    rec->record<CallListRecorded>(l);
     // Mesa's compiler forgets what the list compiled outside its glBegin (invalidate_saved_current_state),
     // and inside the list's glBegin falls back to replaying the list through immediate mode.
-    c->list_state().outside_attributes = 0;
     if (c->list_state().open) c->mark_loopback();
+    c->end_list_node();
+    rec->record<CallListRecorded>(l);
+    c->list_state().outside_attributes = 0;
     if (!c->list_executes()) return;
     if (!c->list_state().open) c->run_held_back();
   }

@@ -115,6 +115,12 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
     c->hold_back(kind, size);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
+    // The values entering the store, for the repeats Mesa's compiler removes (display_list.cpp).
+    if constexpr (same_entry<Fn, &NormalValues>()) c->store_vertex(kind, glm::dvec4(a..., 0.0));
+    if constexpr (same_entry<Fn, &VertexValues>() || same_entry<Fn, &ColorValues>()) {
+      const auto v = std::tie(a...);
+      c->store_vertex(kind, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
+    }
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     if constexpr (same_entry<Fn, &VertexValues>()) {
       if (c->list_executes()) c->note_loop_first_vertex(c->list_held_back());
