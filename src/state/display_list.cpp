@@ -511,6 +511,9 @@ void Context::start_list_node(bool draw) {
 void Context::end_list_node() {
   if (lists_.node_open) lists_.compiling.record<list_node_ends>(lists_.node_draw), lists_.node_open = false;
   close_store();
+  // The store and its format are emptied in GL_COMPILE too (GL_COMPILE_AND_EXECUTE's run_held_back
+  // follows at the same call): a colour after the flush joins the format again.
+  if (!list_executes()) run_held_back();
 }
 
 // Mesa's compiler keeps only the distinct vertices of a vertex list (one index each) unless the list
