@@ -332,6 +332,12 @@ const std::vector<KnownDeviation>& known_deviations() {
                 (current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
                                                    state::kListLoopbackDeduplicated) != soft.deviations.end());
        }},
+      // Row 68: the current values (and a tracked material) set from the never-stored vertex.
+      {"mesa-list-empty-line-loop-current", state::kListEmptyLoopCurrent,
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
+                                                  state::kListEmptyLoopCurrent) != soft.deviations.end();
+       }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56

@@ -241,7 +241,7 @@ class Context {
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
   void mark_loopback();  // the list compiling is replayed through immediate mode (DisplayList::loopback)
-  void note_loop_first_vertex(DisplayList& l);  // after a held-back vertex: a line loop's first keeps its values
+  void note_loop_first_vertex(DisplayList& l);  // after a compiled vertex: a line loop's first keeps its values
   void loop_first_vertex();  // run from the held-back calls: a line loop's first vertex's values
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
   void drop_trailing(int kind);  // run from a list after its glEnd: those values back
@@ -258,7 +258,8 @@ class Context {
   void end_list_node();             // the store is compiled into a vertex list (a flush)
   void split_list_node();           // ... and its open primitive goes on in the next (a wrap)
   void node_begins();               // run from a list: a vertex list starts
-  void node_ends(bool draw);        // run from a list: it ends; a last primitive drawn from arrays copies nothing
+  void node_ends(bool draw, int loop);  // run from a list: it ends; a last primitive drawn from arrays copies
+                                        // nothing, a closed line loop (loop: the attributes) replays its first vertex
   void node_splits(bool draw);      // run from a list: a wrap ends it inside a primitive
   void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
   void close_store();               // the store is compiled into a vertex list: its repeats counted

@@ -38,8 +38,8 @@ void list_end() {
 void list_node_begins() {
   if (Context* c = Context::current()) c->node_begins();
 }
-void list_node_ends(bool draw) {
-  if (Context* c = Context::current()) c->node_ends(draw);
+void list_node_ends(bool draw, int loop) {
+  if (Context* c = Context::current()) c->node_ends(draw, loop);
 }
 void list_stray_end() {
   if (Context* c = Context::current()) c->stray_end();
@@ -161,18 +161,24 @@ static int wrap_copied_vertices(GLenum mode, int count) {
 // Measured (repro list_line_loop_closing_vertex.txt): when Mesa compiles a vertex list whose last
 // primitive is a GL_LINE_LOOP ended in it, it closes the loop by storing a copy of its first vertex
 // after the last (convert_line_loop_to_strip); a GL_COMPILE_AND_EXECUTE list runs that vertex list
-// through immediate mode at once, so the current values are the loop's first vertex's, not its last.
+// through immediate mode at once, so the current values are the loop's first vertex's, not its last;
+// so does glCallList of a list replayed through immediate mode (DisplayList::loopback; measured,
+// repro list_loopback_line_loop_current.txt), where the others copy the last vertex's values. But
+// a list replayed so reads its vertex lists from the buffer they were uploaded to, which ends with the
+// loop's last vertex where the loop was restarted there by a wrap (the copy is not uploaded: Mesa
+// reads the index data after it, the current colour then (0, 0, 0, 1) and the normal 0, measured),
+// and an empty loop's copy is of a vertex never stored: both named (kListEmptyLoopCurrent, row 68).
 void Context::loop_first_vertex() { lists_.loop_first_normal = normal_, lists_.loop_first_color = color_; }
 
-// After a GL_LINE_LOOP's first vertex is held back (GL_COMPILE_AND_EXECUTE): its values are kept
-// when it runs (Context::loop_first_vertex).
+// After a GL_LINE_LOOP's first vertex is compiled or held back: its values are kept when it runs
+// (Context::loop_first_vertex).
 void Context::note_loop_first_vertex(DisplayList& l) {
-  if (&l == &lists_.held_back && lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 1 && !lists_.wrapped)
-    l.record<list_loop_first_vertex>();
+  if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 1 && !lists_.wrapped) l.record<list_loop_first_vertex>();
 }
 
 void Context::run_held_back(bool new_format) {
   const bool closing_loop = lists_.closing_loop;
+  const bool empty_loop = lists_.vertices == 0;  // its closing copy is of a vertex never stored (row 68)
   const int format = lists_.attributes;
   lists_.closing_loop = false;
   if (new_format) lists_.wrap_copies = 0;
@@ -189,8 +195,9 @@ void Context::run_held_back(bool new_format) {
   lists_.held_back.replay();
   --lists_.depth;
   lists_.held_back.clear();
-  if (closing_loop && (format & 1)) normal_ = lists_.loop_first_normal;
-  if (closing_loop && (format & 2)) color_ = lists_.loop_first_color;
+  if (closing_loop && empty_loop) deviations_.insert(kListEmptyLoopCurrent);
+  else if (closing_loop && (format & 1)) normal_ = lists_.loop_first_normal;
+  if (closing_loop && !empty_loop && (format & 2)) color_ = lists_.loop_first_color;
 }
 
 // An attribute that first appears in the list's vertex format, or grows there (a glColor4 or
@@ -233,6 +240,7 @@ void Context::hold_back(int kind, int size) {
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
     if (lists_.vertices > 0 && lists_.vertices < fewest_vertices(lists_.open_mode)) lists_.compiling.incomplete = true;
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
+    if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
     split_list_node();  // the vertex list before the wrap is compiled first, then marked
     if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
     if (list_executes()) run_held_back(false);
@@ -468,15 +476,20 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
       split_list_node();
     }
     lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, lists_.wrapped = false, ++lists_.prims;
-    lists_.wrap_copies = 0, lists_.closing_loop = false;
+    lists_.wrap_copies = 0, lists_.closing_loop = lists_.loop_restarted = false;
   }
   if (&l == &lists_.compiling) start_list_node(true);
   l.record<list_begin>(mode);
   lists_.compiling_draw = true;
-  for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
+  for (GLsizei k = 0; k < count; ++k) {
+    compile_element(l, indices ? GLint(indices[k]) : first + k);
+    // A line loop's first vertex (Context::loop_first_vertex): a wrap at it leaves the loop whole.
+    if (k == 0 && mode == GL_LINE_LOOP && vertex_array_.enabled && vertex_array_.pointer)
+      l.record<list_loop_first_vertex>();
+  }
   lists_.compiling_draw = false;
   if (&l == &lists_.compiling && (count < fewest_vertices(mode) || !vertex_array_.enabled)) l.incomplete = true;
-  if (format) lists_.open = false, lists_.closing_loop = list_executes() && mode == GL_LINE_LOOP;
+  if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
 }
@@ -509,7 +522,11 @@ void Context::start_list_node(bool draw) {
 }
 
 void Context::end_list_node() {
-  if (lists_.node_open) lists_.compiling.record<list_node_ends>(lists_.node_draw), lists_.node_open = false;
+  if (lists_.node_open)
+    lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
+                                                              : lists_.vertices == 0 || lists_.loop_restarted ? 8  // row 68
+                                                                                     : lists_.attributes & 3),
+        lists_.node_open = false;
   close_store();
   // The store and its format are emptied in GL_COMPILE too (GL_COMPILE_AND_EXECUTE's run_held_back
   // follows at the same call): a colour after the flush joins the format again.
@@ -555,8 +572,14 @@ void Context::split_list_node() {
 
 void Context::node_begins() { node_values_ = current_values(); }
 
-void Context::node_ends(bool draw) {
-  if (draw && lists_.replaying_loopback == 0) restore(node_values_);
+void Context::node_ends(bool draw, int loop) {
+  if (lists_.replaying_loopback > 0) {
+    if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
+    if (loop & 1) normal_ = lists_.loop_first_normal;
+    if (loop & 2) color_ = lists_.loop_first_color;
+  } else if (draw) {
+    restore(node_values_);
+  }
 }
 
 void Context::node_splits(bool draw) {
@@ -608,8 +631,15 @@ void Context::compile_element(DisplayList& l, GLint i) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
     if (format) hold_back(-1, int(vertex_array_.size)), store_vertex(-1, v);
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
-    if (format) note_loop_first_vertex(l);
     if (inside) lists_.had_vertex = true, lists_.trailing = 0;
+    // A glArrayElement in the list's glBegin: a line loop's first vertex keeps its values (counted in
+    // the vertex store by the list that forms it, the held-back calls after the list in
+    // GL_COMPILE_AND_EXECUTE).
+    if (lists_.open && !lists_.compiling_draw) {
+      if (format) note_loop_first_vertex(l);
+      else if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 0 && !lists_.wrapped)
+        l.record<list_loop_first_vertex>();
+    }
   }
 }
 

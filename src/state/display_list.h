@@ -55,6 +55,14 @@ inline constexpr const char* kListLoopbackDeduplicated =
     "its distinct vertices and replays the vertices by their first positions, so later ones are others or never "
     "sent (drawn, fed back, made current); soft replays the vertices sent";
 
+// Row 68 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListEmptyLoopCurrent =
+    "a GL_LINE_LOOP last in a display list's vertex list and run through immediate mode, empty (a glBegin/glEnd or "
+    "a compiled draw without a vertex; GL_COMPILE_AND_EXECUTE, or a list replayed so) or restarted there by a wrap "
+    "(a list replayed so): Mesa closes the loop with a copy of a first vertex it never stored, or reads the copy "
+    "past the vertices it kept, and sets the current values (and a tracked material) from that memory; soft "
+    "leaves them as they were";
+
 // The fewest vertices a primitive of this mode draws anything with.
 inline int fewest_vertices(GLenum mode) {
   switch (mode) {
@@ -157,6 +165,7 @@ struct ListState {
   // GL_COMPILE_AND_EXECUTE: the store's last primitive is a GL_LINE_LOOP ended in it, and the values
   // of its first vertex as the held-back calls ran (display_list.cpp, Context::run_held_back).
   bool closing_loop = false;
+  bool loop_restarted = false;  // compiling: a wrap restarted the open line loop in the store
   glm::dvec3 loop_first_normal{0, 0, 1};
   glm::dvec4 loop_first_color{1, 1, 1, 1};
   int color_size = 0, position_size = 0;

@@ -81,7 +81,7 @@ bool compiled_only(const A&... a) {
   if constexpr (K == ListKind::Vertex) {
     if constexpr (same_entry<Fn, &Begin>())
       ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
-      ls.trailing = 0, ls.wrapped = false, ++ls.prims, ls.wrap_copies = 0, ls.closing_loop = false;
+      ls.trailing = 0, ls.wrapped = false, ++ls.prims, ls.wrap_copies = 0, ls.closing_loop = ls.loop_restarted = false;
     if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
     if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
     if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
@@ -95,7 +95,7 @@ bool compiled_only(const A&... a) {
         c->run_held_back();
         return false;
       }
-      ls.open = false, ls.closing_loop = c->list_executes() && ls.open_mode == GL_LINE_LOOP;
+      ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
       if (ls.primitive_vertices < fewest_vertices(ls.open_mode)) l->incomplete = true;
     }
   }
@@ -123,6 +123,7 @@ bool compiled_only(const A&... a) {
     }
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     if constexpr (same_entry<Fn, &VertexValues>()) {
+      c->note_loop_first_vertex(*l);
       if (c->list_executes()) c->note_loop_first_vertex(c->list_held_back());
     }
     if constexpr (same_entry<Fn, &End>()) {
