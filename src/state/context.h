@@ -241,6 +241,7 @@ class Context {
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
   void mark_loopback();  // the list compiling is replayed through immediate mode (DisplayList::loopback)
+  void mark_called_loopback(const DisplayList& l);  // ... and so are the lists it calls, for good
   void note_loop_first_vertex(DisplayList& l);  // after a compiled vertex: a line loop's first keeps its values
   void loop_first_vertex();  // run from the held-back calls: a line loop's first vertex's values
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took

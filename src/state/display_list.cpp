@@ -145,6 +145,15 @@ void Context::drop_trailing(int kind) {
 // the wrap the current colour stays as it was.
 void Context::mark_loopback() { lists_.compiling.loopback = true; }
 
+void Context::mark_called_loopback(const DisplayList& l) {
+  for (GLuint name : l.calls) {
+    const auto it = lists_.lists.find(name);
+    if (it == lists_.lists.end() || it->second.loopback) continue;  // (Mesa crashes on a missing one: row 55)
+    it->second.loopback = true;
+    mark_called_loopback(it->second);
+  }
+}
+
 // The vertices of the open primitive a wrap copies into the next vertex list (vbo_copy_vertices):
 // what the mode has not drawn yet, and for the strips, fans, loops and polygons the vertices the
 // rest is joined to.
@@ -328,7 +337,11 @@ void Context::EndList() {
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
   if (lists_.open) mark_loopback();  // vbo_save_EndList inside the list's glBegin
   end_list_node();
-  lists_.compiling.reads_deduplicated = lists_.compiling.loopback && lists_.deduplicated;
+  lists_.compiling.deduplicated = lists_.deduplicated;
+  // Mesa marks the lists it calls, and theirs, too, for good (replace_op_vertex_list_recursively;
+  // measured: a GL_COMPILE_AND_EXECUTE list calling a list whose glDrawElements repeats a vertex, then
+  // wrapping so, reads that list's vertices shifted when it runs: repro list_loopback_marks_called.txt).
+  if (lists_.compiling.loopback) mark_called_loopback(lists_.compiling);
   run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
@@ -361,11 +374,11 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
-  if (it->second.reads_deduplicated) deviations_.insert(kListLoopbackDeduplicated);
-  const int loopback = it->second.loopback ? 1 : 0;
-  ++lists_.depth, lists_.replaying_loopback += loopback;
+  if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
+  const bool outer = lists_.replaying_loopback;
+  ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
-  --lists_.depth, lists_.replaying_loopback -= loopback;
+  --lists_.depth, lists_.replaying_loopback = outer;
 }
 
 namespace {
@@ -404,6 +417,7 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
     if (lists_.open) mark_loopback();  // as glCallList (soft_gl.cpp)
     end_list_node();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
+    for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
     lists_.outside_attributes = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
@@ -495,7 +509,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
 }
 
 void Context::stray_end() {
-  if (lists_.replaying_loopback > 0 && !in_begin_) error(GL_INVALID_OPERATION);
+  if (lists_.replaying_loopback && !in_begin_) error(GL_INVALID_OPERATION);
 }
 
 // The list whose recording stands for Mesa's vertex store: the held-back calls in
@@ -573,7 +587,7 @@ void Context::split_list_node() {
 void Context::node_begins() { node_values_ = current_values(); }
 
 void Context::node_ends(bool draw, int loop) {
-  if (lists_.replaying_loopback > 0) {
+  if (lists_.replaying_loopback) {
     if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
     if (loop & 1) normal_ = lists_.loop_first_normal;
     if (loop & 2) color_ = lists_.loop_first_color;

@@ -97,12 +97,13 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, reads_deduplicated = false; }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, calls.clear(); }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   // Mesa replays the list's vertex lists through immediate mode (vbo_save's UseLoopback: display_list.cpp,
   // Context::mark_loopback), where a compiled draw's values become current.
   bool loopback = false;
-  bool reads_deduplicated = false;  // and a vertex list of it lost repeated vertices (kListLoopbackDeduplicated)
+  bool deduplicated = false;  // a vertex list of it lost repeated vertices, compiled before any loopback mark
+  std::vector<GLuint> calls;  // the names its glCallList and glCallLists compiled (without the list base)
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -161,7 +162,7 @@ struct ListState {
   // (Mesa's ListState.ActiveAttribSize): bits as `attributes`.
   int wrap_copies = 0;
   int outside_attributes = 0;
-  int replaying_loopback = 0;  // lists being replayed through immediate mode (DisplayList::loopback)
+  bool replaying_loopback = false;  // the list running is replayed through immediate mode (DisplayList::loopback)
   // GL_COMPILE_AND_EXECUTE: the store's last primitive is a GL_LINE_LOOP ended in it, and the values
   // of its first vertex as the held-back calls ran (display_list.cpp, Context::run_held_back).
   bool closing_loop = false;

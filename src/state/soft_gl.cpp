@@ -231,6 +231,7 @@ void APIENTRY CallList(GLuint l) {
     if (c->list_state().open) c->mark_loopback();
     c->end_list_node();
     rec->record<CallListRecorded>(l);
+    rec->calls.push_back(l);
     c->list_state().outside_attributes = 0;
     if (!c->list_executes()) return;
     if (!c->list_state().open) c->run_held_back();
