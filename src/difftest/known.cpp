@@ -323,6 +323,21 @@ const std::vector<KnownDeviation>& known_deviations() {
          return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
                                                   state::kListLineLoopCurrent) != soft.deviations.end();
        }},
+      // Row 67: the vertices Mesa replays are others than sent: what they draw, and the current values
+      // (and a tracked material) they leave.
+      {"mesa-list-loopback-deduplicated", state::kListLoopbackDeduplicated,
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
+         static const KnownDeviation shown = drawn("", state::kListLoopbackDeduplicated);
+         return shown.explains(s, m, mesa, soft) ||
+                (current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
+                                                   state::kListLoopbackDeduplicated) != soft.deviations.end());
+       }},
+      // Row 68: the current values (and a tracked material) set from the never-stored vertex.
+      {"mesa-list-empty-line-loop-current", state::kListEmptyLoopCurrent,
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
+                                                  state::kListEmptyLoopCurrent) != soft.deviations.end();
+       }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62
       drawn("zero-clip-vertex", state::kZeroClipVertex),      // row 56

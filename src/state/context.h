@@ -240,22 +240,31 @@ class Context {
   void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
+  void mark_loopback();  // the list compiling is replayed through immediate mode (DisplayList::loopback)
+  void mark_called_loopback(const DisplayList& l);  // ... and so are the lists it calls, for good
+  void note_loop_first_vertex(DisplayList& l);  // after a compiled vertex: a line loop's first keeps its values
+  void loop_first_vertex();  // run from the held-back calls: a line loop's first vertex's values
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
   void drop_trailing(int kind);  // run from a list after its glEnd: those values back
   ListState& list_state() { return lists_; }
   void compile_error(DisplayList& l, GLenum e);  // a compiled draw's error (display_list.cpp)
   void record_list_error(GLenum e);  // a compile error: recorded, and raised now in GL_COMPILE_AND_EXECUTE
   // Vertex-array draws while compiling, dereferenced (indices null: first .. first + count - 1).
-  // keep_current: leave the current values as they were (a compiled draw played back); false for
-  // the draws GL_COMPILE_AND_EXECUTE holds back, which set them as glArrayElement would (measured).
-  void compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first,
-                        bool keep_current = true);
-  void compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices,
-                             bool keep_current = true);
+  void compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first);
+  void compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices);
   void compile_element(DisplayList& l, GLint i);
   bool forms_format(const DisplayList& l) const;  // whether recording into l stands for Mesa's vertex store
-  void begin_compiled_draw(GLenum mode);
-  void end_compiled_draw();
+  // Mesa's vertex lists as the compiled list records them (display_list.cpp, Context::start_list_node).
+  void start_list_node(bool draw);  // a primitive begins in the list's vertex store (a compiled draw or not)
+  void end_list_node();             // the store is compiled into a vertex list (a flush)
+  void split_list_node();           // ... and its open primitive goes on in the next (a wrap)
+  void node_begins();               // run from a list: a vertex list starts
+  void node_ends(bool draw, int loop);  // run from a list: it ends; a last primitive drawn from arrays copies
+                                        // nothing, a closed line loop (loop: the attributes) replays its first vertex
+  void node_splits(bool draw);      // run from a list: a wrap ends it inside a primitive
+  void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
+  void close_store();               // the store is compiled into a vertex list: its repeats counted
+  void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
 
   // Texture coordinates, the edge flag, glRect, glHint, glInterleavedArrays (attributes.cpp).
@@ -496,6 +505,7 @@ class Context {
     glm::vec4 texcoord;
   };
   CurrentValues current_values() const { return {normal_, color_, texcoord_}; }
+  CurrentValues node_values_{{0, 0, 1}, {1, 1, 1, 1}, {0, 0, 0, 1}};  // before a list's vertex list ran
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
     normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
     color_size_ = color_active_ = 0, normal_in_format_ = false;

@@ -35,11 +35,17 @@ void list_begin(GLenum mode) {
 void list_end() {
   if (Context* c = Context::current()) c->End();
 }
-void list_begin_draw(GLenum mode) {
-  if (Context* c = Context::current()) c->begin_compiled_draw(mode);
+void list_node_begins() {
+  if (Context* c = Context::current()) c->node_begins();
 }
-void list_end_draw() {
-  if (Context* c = Context::current()) c->end_compiled_draw();
+void list_node_ends(bool draw, int loop) {
+  if (Context* c = Context::current()) c->node_ends(draw, loop);
+}
+void list_stray_end() {
+  if (Context* c = Context::current()) c->stray_end();
+}
+void list_node_split(bool draw) {
+  if (Context* c = Context::current()) c->node_splits(draw);
 }
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
@@ -56,7 +62,10 @@ void list_pending_attribute(int kind) {
 // pending normal over it. glCallList flushes before it runs, so the pending normal lives from its
 // glNormal to the end of the outermost glCallList or glCallLists; soft puts it back there. A glColor
 // does the same (list_color_pending.txt).
-void Context::mark_list_attribute(DisplayList& l, int kind) { l.record<list_pending_attribute>(kind); }
+void Context::mark_list_attribute(DisplayList& l, int kind) {
+  l.record<list_pending_attribute>(kind);
+  if (&l == &lists_.compiling) lists_.outside_attributes |= kind;
+}
 
 void Context::keep_pending(int kind) {
   if (!lists_.calling) return;  // GL_COMPILE_AND_EXECUTE's own calls: measured to agree already
@@ -75,6 +84,9 @@ void list_drop_trailing(int kind) {
 }
 void list_loopback_attributes(int kinds, int kind, bool first_format) {
   if (Context* c = Context::current()) c->list_loopback(kinds, kind, first_format);
+}
+void list_loop_first_vertex() {
+  if (Context* c = Context::current()) c->loop_first_vertex();
 }
 }  // namespace
 
@@ -122,12 +134,68 @@ void Context::drop_trailing(int kind) {
   if (kind & 2) color_ = lists_.last_vertex_color;
 }
 
+// Mesa replays a list's vertex lists through immediate mode (UseLoopback) once its compiler met a
+// vertex it cannot place at compile time: a glBegin still open at glEndList, a glCallList inside the
+// list's glBegin, or a wrap that copies the open primitive's last vertices into the next vertex list
+// while an attribute joins the format that the list never compiled outside its glBegin (the copies
+// take a value the compiler does not know: vbo_save_api.c's dangling_attr_ref). Every vertex list of
+// the list is then replayed so, compiled draws too, whose values therefore become current: measured,
+// a compiled glDrawArrays with a colour array after such a wrap leaves its colour current and
+// tracked by colour material after glCallList (repro list_loopback_draw_current.txt), where without
+// the wrap the current colour stays as it was.
+void Context::mark_loopback() { lists_.compiling.loopback = true; }
+
+void Context::mark_called_loopback(const DisplayList& l) {
+  for (GLuint name : l.calls) {
+    const auto it = lists_.lists.find(name);
+    if (it == lists_.lists.end() || it->second.loopback) continue;  // (Mesa crashes on a missing one: row 55)
+    it->second.loopback = true;
+    mark_called_loopback(it->second);
+  }
+}
+
+// The vertices of the open primitive a wrap copies into the next vertex list (vbo_copy_vertices):
+// what the mode has not drawn yet, and for the strips, fans, loops and polygons the vertices the
+// rest is joined to.
+static int wrap_copied_vertices(GLenum mode, int count) {
+  switch (mode) {
+    case GL_POINTS: return 0;
+    case GL_LINES: return count % 2;
+    case GL_TRIANGLES: return count % 3;
+    case GL_QUADS: return count % 4;
+    default: return count > 0 ? 1 : 0;  // at least one: how many does not matter here
+  }
+}
+
+// Measured (repro list_line_loop_closing_vertex.txt): when Mesa compiles a vertex list whose last
+// primitive is a GL_LINE_LOOP ended in it, it closes the loop by storing a copy of its first vertex
+// after the last (convert_line_loop_to_strip); a GL_COMPILE_AND_EXECUTE list runs that vertex list
+// through immediate mode at once, so the current values are the loop's first vertex's, not its last;
+// so does glCallList of a list replayed through immediate mode (DisplayList::loopback; measured,
+// repro list_loopback_line_loop_current.txt), where the others copy the last vertex's values. But
+// a list replayed so reads its vertex lists from the buffer they were uploaded to, which ends with the
+// loop's last vertex where the loop was restarted there by a wrap (the copy is not uploaded: Mesa
+// reads the index data after it, the current colour then (0, 0, 0, 1) and the normal 0, measured),
+// and an empty loop's copy is of a vertex never stored: both named (kListEmptyLoopCurrent, row 68).
+void Context::loop_first_vertex() { lists_.loop_first_normal = normal_, lists_.loop_first_color = color_; }
+
+// After a GL_LINE_LOOP's first vertex is compiled or held back: its values are kept when it runs
+// (Context::loop_first_vertex).
+void Context::note_loop_first_vertex(DisplayList& l) {
+  if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 1 && !lists_.wrapped) l.record<list_loop_first_vertex>();
+}
+
 void Context::run_held_back(bool new_format) {
+  const bool closing_loop = lists_.closing_loop;
+  const bool empty_loop = lists_.vertices == 0;  // its closing copy is of a vertex never stored (row 68)
+  const int format = lists_.attributes;
+  lists_.closing_loop = false;
+  if (new_format) lists_.wrap_copies = 0;
   if (new_format) lists_.attributes = 0, lists_.color_size = lists_.position_size = 0, lists_.shown = false;
-  // Measured (list_store_fills.txt): after a draw that filled the store, the next flush of a
-  // GL_COMPILE_AND_EXECUTE list (a state call, glEndList) raises GL_INVALID_OPERATION on the
-  // executing side, and nothing is recorded: glCallList of the list raises nothing, nor does a
-  // GL_COMPILE list's glEndList.
+  // Measured (list_store_fills.txt): after a draw that filled the store and joined the primitive
+  // restarted there (compile_elements), the next flush of a GL_COMPILE_AND_EXECUTE list (a state
+  // call, glEndList) raises GL_INVALID_OPERATION on the executing side; glCallList raises it only
+  // for a list replayed through immediate mode (list_stray_end), a GL_COMPILE list's glEndList never.
   if (new_format && lists_.refill_error) lists_.refill_error = false, error(GL_INVALID_OPERATION);
   lists_.vertices = lists_.stored = 0;
   lists_.prims = new_format ? 0 : 1;
@@ -136,6 +204,9 @@ void Context::run_held_back(bool new_format) {
   lists_.held_back.replay();
   --lists_.depth;
   lists_.held_back.clear();
+  if (closing_loop && empty_loop) deviations_.insert(kListEmptyLoopCurrent);
+  else if (closing_loop && (format & 1)) normal_ = lists_.loop_first_normal;
+  if (closing_loop && !empty_loop && (format & 2)) color_ = lists_.loop_first_color;
 }
 
 // An attribute that first appears in the list's vertex format, or grows there (a glColor4 or
@@ -177,8 +248,12 @@ void Context::hold_back(int kind, int size) {
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
     if (lists_.vertices > 0 && lists_.vertices < fewest_vertices(lists_.open_mode)) lists_.compiling.incomplete = true;
+    const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
+    if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
+    split_list_node();  // the vertex list before the wrap is compiled first, then marked
+    if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
     if (list_executes()) run_held_back(false);
-    lists_.vertices = lists_.stored = 0, lists_.prims = 1;
+    lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies;
   }
   if (kind < 0) {
     if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
@@ -245,6 +320,8 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.open = false, lists_.vertices = lists_.stored = 0, lists_.attributes = 0, lists_.had_vertex = false,
   lists_.trailing = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = false, lists_.refill_error = false;
+  lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
+  lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
 void Context::EndList() {
@@ -258,6 +335,13 @@ void Context::EndList() {
   const bool wrapped = in_begin_ && lists_.mode == GL_COMPILE_AND_EXECUTE;
   if (!wrapped && !outside_begin_end()) return;
   if (lists_.mode == 0) return error(GL_INVALID_OPERATION);
+  if (lists_.open) mark_loopback();  // vbo_save_EndList inside the list's glBegin
+  end_list_node();
+  lists_.compiling.deduplicated = lists_.deduplicated;
+  // Mesa marks the lists it calls, and theirs, too, for good (replace_op_vertex_list_recursively;
+  // measured: a GL_COMPILE_AND_EXECUTE list calling a list whose glDrawElements repeats a vertex, then
+  // wrapping so, reads that list's vertices shifted when it runs: repro list_loopback_marks_called.txt).
+  if (lists_.compiling.loopback) mark_called_loopback(lists_.compiling);
   run_held_back();
   // The list replaces any list of that name only now: a glCallList of it while compiling ran the old one.
   lists_.lists[lists_.index] = std::move(lists_.compiling);
@@ -290,9 +374,11 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
-  ++lists_.depth;
+  if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
+  const bool outer = lists_.replaying_loopback;
+  ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
-  --lists_.depth;
+  --lists_.depth, lists_.replaying_loopback = outer;
 }
 
 namespace {
@@ -328,7 +414,11 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   if (n == 0 || !lists) return;
   // Compiled, the names are copied now and the list base read when the list runs.
   if (DisplayList* l = list_recording()) {
+    if (lists_.open) mark_loopback();  // as glCallList (soft_gl.cpp)
+    end_list_node();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
+    for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
+    lists_.outside_attributes = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
   }
@@ -367,8 +457,7 @@ int Context::list_values(GLenum pname, GLdouble* out) {
 // glBegin / glNormal / glColor / glVertex / glEnd calls that glArrayElement would make, so the
 // list does not depend on the arrays later (section 5.4). The draw's own errors are recorded to be
 // raised when the list runs, as Mesa's compiled errors are.
-void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first,
-                               bool keep_current) {
+void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const GLuint* indices, GLint first) {
   GLenum e = GL_NO_ERROR;
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
@@ -377,6 +466,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
   // store, so the elements grow the list's vertex format as calls do (hold_back).
   const bool format = forms_format(l);
+  bool merged = false;
   if (format) {
     // Mesa makes room for the draw's vertices first: past its store's size (256 Ki bytes, counted
     // with the format as it is) and with a primitive already stored, it compiles what it holds
@@ -385,19 +475,41 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     // it). The draws of the generator's huge category are the ones this meets.
     const int format_floats = lists_.position_size + ((lists_.attributes & 1) ? 3 : 0) + lists_.color_size +
                               ((lists_.attributes & 4) ? 4 : 0) + ((lists_.attributes & 8) ? 1 : 0);
+    // The next vertex list then begins with the store's last primitive restarted, empty and without
+    // its glBegin (wrap_filled_vertex), and Mesa joins the draw to it where the modes are the same
+    // and join (vbo_merge_draws): the draw is then a primitive without a glBegin, whose glEnd,
+    // replayed through immediate mode, raises GL_INVALID_OPERATION on the executing side: at the
+    // next flush of a GL_COMPILE_AND_EXECUTE list (measured: list_store_fills.txt) and when a list
+    // replayed so (DisplayList::loopback) runs (measured: glCallList of such a list raises it, of
+    // one without the wrap nothing; repro list_store_fills_loopback.txt).
     if (lists_.prims > 0 && (double(lists_.stored) + double(count)) * format_floats * 4 > ListState::kStoreBytes) {
-      if (list_executes()) run_held_back(false), lists_.refill_error = true;
+      merged = lists_.open_mode == mode &&
+               (mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS);
+      if (list_executes()) run_held_back(false), lists_.refill_error = merged;
       lists_.stored = 0;
+      split_list_node();
     }
     lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, lists_.wrapped = false, ++lists_.prims;
+    lists_.wrap_copies = 0, lists_.closing_loop = lists_.loop_restarted = false;
   }
-  keep_current ? l.record<list_begin_draw>(mode) : l.record<list_begin>(mode);
+  if (&l == &lists_.compiling) start_list_node(true);
+  l.record<list_begin>(mode);
   lists_.compiling_draw = true;
-  for (GLsizei k = 0; k < count; ++k) compile_element(l, indices ? GLint(indices[k]) : first + k);
+  for (GLsizei k = 0; k < count; ++k) {
+    compile_element(l, indices ? GLint(indices[k]) : first + k);
+    // A line loop's first vertex (Context::loop_first_vertex): a wrap at it leaves the loop whole.
+    if (k == 0 && mode == GL_LINE_LOOP && vertex_array_.enabled && vertex_array_.pointer)
+      l.record<list_loop_first_vertex>();
+  }
   lists_.compiling_draw = false;
   if (&l == &lists_.compiling && (count < fewest_vertices(mode) || !vertex_array_.enabled)) l.incomplete = true;
-  if (format) lists_.open = false;
-  keep_current ? l.record<list_end_draw>() : l.record<list_end>();
+  if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
+  l.record<list_end>();
+  if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
+}
+
+void Context::stray_end() {
+  if (lists_.replaying_loopback && !in_begin_) error(GL_INVALID_OPERATION);
 }
 
 // The list whose recording stands for Mesa's vertex store: the held-back calls in
@@ -407,20 +519,88 @@ bool Context::forms_format(const DisplayList& l) const {
 }
 
 
-// A compiled draw runs as glBegin, the elements' values, glEnd, but leaves the current values as
-// they were, as Mesa's playback of a compiled draw does (and as the draw itself would).
-void Context::begin_compiled_draw(GLenum mode) {
-  lists_.kept_normal = normal_, lists_.kept_color = color_, lists_.kept_texcoord = texcoord_;
-  Begin(mode);
+// Mesa compiles the list's vertex store into a vertex list at each flush (a state call compiled, a
+// glCallList, glEndList) and at each wrap, and plays each back from its buffer, copying the values
+// its last vertex stored to the current ones (playback_copy_to_current), except where the last
+// primitive begun in it is a compiled draw (no_current_update): then the vertex list leaves every
+// current value as it was before it ran, the values of the glBegin/glEnd before the draw in it too.
+// The values a draw's elements leave in the store's vertex format go on into the vertices that follow
+// in the same vertex list (a glBegin after the draw takes its last colour). Measured (repro
+// list_draw_values_carried.txt): a compiled glDrawArrays with a colour array, then glBegin, two
+// vertices, glEnd draws the line in the array's colour and leaves it current; without the glBegin the
+// colour stays as it was. Replayed through immediate mode (DisplayList::loopback) every vertex sets
+// the current values. Soft records where each vertex list starts and ends and puts the values back.
+void Context::start_list_node(bool draw) {
+  if (!lists_.node_open) lists_.compiling.record<list_node_begins>(), lists_.node_open = true;
+  lists_.node_draw = draw;
 }
 
-void Context::end_compiled_draw() {
-  End();
-  restore({lists_.kept_normal, lists_.kept_color, lists_.kept_texcoord});
+void Context::end_list_node() {
+  if (lists_.node_open)
+    lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
+                                                              : lists_.vertices == 0 || lists_.loop_restarted ? 8  // row 68
+                                                                                     : lists_.attributes & 3),
+        lists_.node_open = false;
+  close_store();
+  // The store and its format are emptied in GL_COMPILE too (GL_COMPILE_AND_EXECUTE's run_held_back
+  // follows at the same call): a colour after the flush joins the format again.
+  if (!list_executes()) run_held_back();
 }
 
-void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices,
-                                    bool keep_current) {
+// Mesa's compiler keeps only the distinct vertices of a vertex list (one index each) unless the list
+// is already marked for loopback, which replays the vertices by their first positions in that buffer.
+// Measured (repro list_loopback_deduplicated.txt): a GL_COMPILE list's glDrawArrays(GL_LINES) of nine
+// positions, then glBegin(GL_LINES) and a glVertex3 left open at glEndList, draws other lines than
+// sent where a position repeats among the first eight (all nine distinct, or only the ninth, unused,
+// repeating: as sent). Named, not modelled.
+void Context::store_vertex(int kind, const glm::dvec4& v) {
+  if (kind == 1) lists_.store_normal = glm::dvec3(v);
+  if (kind == 2) lists_.store_color = v;
+  if (kind >= 0 || lists_.store_repeats) return;
+  if (lists_.store_vertices.size() >= 4096) return void(lists_.store_repeats = true);  // taken as repeating
+  std::array<uint32_t, 11> key{};
+  auto put = [&](int at, double x) {
+    const float f = float(x);
+    std::memcpy(&key[size_t(at)], &f, sizeof f);
+  };
+  for (int k = 0; k < 4; ++k) put(k, v[k]);
+  for (int k = 0; k < 3 && (lists_.attributes & 1); ++k) put(4 + k, lists_.store_normal[k]);
+  for (int k = 0; k < 4 && (lists_.attributes & 2); ++k) put(7 + k, lists_.store_color[k]);
+  if (!lists_.store_vertices.insert(key).second) lists_.store_repeats = true;
+}
+
+void Context::close_store() {
+  if (lists_.store_repeats && !lists_.compiling.loopback) lists_.deduplicated = true;
+  lists_.store_vertices.clear(), lists_.store_repeats = false;
+}
+
+// A wrap ends a vertex list inside a primitive, which goes on in the next with the same
+// no_current_update: one drawn from arrays leaves the values from before both (measured: a compiled
+// glDrawArrays whose first element's position grows the format after another draw, lit: seed 4242
+// stream 701 shrunk), so nothing is put back in the middle of the primitive; one from glBegin copies
+// its values so far, the start of the next.
+void Context::split_list_node() {
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw);
+  close_store();
+}
+
+void Context::node_begins() { node_values_ = current_values(); }
+
+void Context::node_ends(bool draw, int loop) {
+  if (lists_.replaying_loopback) {
+    if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
+    if (loop & 1) normal_ = lists_.loop_first_normal;
+    if (loop & 2) color_ = lists_.loop_first_color;
+  } else if (draw) {
+    restore(node_values_);
+  }
+}
+
+void Context::node_splits(bool draw) {
+  if (!draw) node_values_ = current_values();
+}
+
+void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices) {
   GLenum e = GL_NO_ERROR;
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
@@ -434,7 +614,7 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
     names[k] = type == GL_UNSIGNED_BYTE    ? static_cast<const GLubyte*>(indices)[k]
                : type == GL_UNSIGNED_SHORT ? static_cast<const GLushort*>(indices)[k]
                                            : static_cast<const GLuint*>(indices)[k];
-  compile_elements(l, mode, count, names.data(), 0, keep_current);
+  compile_elements(l, mode, count, names.data(), 0);
 }
 
 void Context::compile_element(DisplayList& l, GLint i) {
@@ -450,22 +630,30 @@ void Context::compile_element(DisplayList& l, GLint i) {
   if (normal_array_.enabled && normal_array_.pointer) {
     const glm::dvec4 n = attribute(normal_array_, i, 3, f, glm::dvec4(0));
     if (inside) list_trailing(l, 1);
-    if (format) hold_back(1);
+    if (format) hold_back(1), store_vertex(1, n);
     l.record<list_normal>(n.x, n.y, n.z);
     if (outside) mark_list_attribute(l, 1);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     if (inside) list_trailing(l, 2);
-    if (format) hold_back(2, int(color_array_.size));
+    if (format) hold_back(2, int(color_array_.size)), store_vertex(2, c);
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
     if (outside) mark_list_attribute(l, 2);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
-    if (format) hold_back(-1, int(vertex_array_.size));
+    if (format) hold_back(-1, int(vertex_array_.size)), store_vertex(-1, v);
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
     if (inside) lists_.had_vertex = true, lists_.trailing = 0;
+    // A glArrayElement in the list's glBegin: a line loop's first vertex keeps its values (counted in
+    // the vertex store by the list that forms it, the held-back calls after the list in
+    // GL_COMPILE_AND_EXECUTE).
+    if (lists_.open && !lists_.compiling_draw) {
+      if (format) note_loop_first_vertex(l);
+      else if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 0 && !lists_.wrapped)
+        l.record<list_loop_first_vertex>();
+    }
   }
 }
 

@@ -19,8 +19,11 @@
 
 #include <cstring>
 #include <glm/glm.hpp>
+#include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
+#include <set>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -44,6 +47,21 @@ inline constexpr const char* kListIncompleteFedBack =
     "a display list holding a primitive with fewer vertices than its mode draws (a glBegin/glEnd or a compiled "
     "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
     "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
+
+// Row 67 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListLoopbackDeduplicated =
+    "a display list replayed through immediate mode (a glBegin left open at glEndList, a wrap copying vertices "
+    "while an attribute joins) holding a vertex list compiled before that with a vertex repeated: Mesa kept only "
+    "its distinct vertices and replays the vertices by their first positions, so later ones are others or never "
+    "sent (drawn, fed back, made current); soft replays the vertices sent";
+
+// Row 68 (docs/deviations.md): named, not modelled.
+inline constexpr const char* kListEmptyLoopCurrent =
+    "a GL_LINE_LOOP last in a display list's vertex list and run through immediate mode, empty (a glBegin/glEnd or "
+    "a compiled draw without a vertex; GL_COMPILE_AND_EXECUTE, or a list replayed so) or restarted there by a wrap "
+    "(a list replayed so): Mesa closes the loop with a copy of a first vertex it never stored, or reads the copy "
+    "past the vertices it kept, and sets the current values (and a tracked material) from that memory; soft "
+    "leaves them as they were";
 
 // The fewest vertices a primitive of this mode draws anything with.
 inline int fewest_vertices(GLenum mode) {
@@ -79,8 +97,13 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false; }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, calls.clear(); }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
+  // Mesa replays the list's vertex lists through immediate mode (vbo_save's UseLoopback: display_list.cpp,
+  // Context::mark_loopback), where a compiled draw's values become current.
+  bool loopback = false;
+  bool deduplicated = false;  // a vertex list of it lost repeated vertices, compiled before any loopback mark
+  std::vector<GLuint> calls;  // the names its glCallList and glCallLists compiled (without the list base)
   bool empty() const { return bytes_.empty(); }
 
  private:
@@ -134,16 +157,35 @@ struct ListState {
   int prims = 0;  // primitives begun in the store since then (a wrap leaves the one it interrupted)
   bool refill_error = false;  // a draw filled the store: the next flush raises an error (compile_elements)
   int attributes = 0;      // bits: normal, colour, texture, edge
+  // Vertices of the open primitive a wrap copied into the next vertex list (Mesa's copied.nr), and
+  // the attributes compiled outside the list's glBegin since glNewList or a compiled glCallList
+  // (Mesa's ListState.ActiveAttribSize): bits as `attributes`.
+  int wrap_copies = 0;
+  int outside_attributes = 0;
+  bool replaying_loopback = false;  // the list running is replayed through immediate mode (DisplayList::loopback)
+  // GL_COMPILE_AND_EXECUTE: the store's last primitive is a GL_LINE_LOOP ended in it, and the values
+  // of its first vertex as the held-back calls ran (display_list.cpp, Context::run_held_back).
+  bool closing_loop = false;
+  bool loop_restarted = false;  // compiling: a wrap restarted the open line loop in the store
+  glm::dvec3 loop_first_normal{0, 0, 1};
+  glm::dvec4 loop_first_color{1, 1, 1, 1};
   int color_size = 0, position_size = 0;
   GLuint index = 0;  // GL_LIST_INDEX: the list being compiled, 0 when none
   GLenum mode = 0;   // GL_LIST_MODE: GL_COMPILE or GL_COMPILE_AND_EXECUTE; 0 when none
   GLuint base = 0;   // GL_LIST_BASE
   int depth = 0;     // lists being executed, one inside another
   GLuint max_name = 0;  // the largest name the table has held (glGenLists gives out the next)
-  // The current values before a compiled draw, put back after it.
-  glm::dvec3 kept_normal{0, 0, 1};
-  glm::dvec4 kept_color{1, 1, 1, 1};
-  glm::vec4 kept_texcoord{0, 0, 0, 1};
+  // Compiling: a vertex list is open in the list (recorded Context::node_begins), and whether its
+  // last primitive begun is a compiled draw (Mesa's no_current_update).
+  bool node_open = false;
+  bool node_draw = false;
+  // Compiling: the vertices of the store since it was last compiled, as Mesa's compiler compares them
+  // (the bits of the position, normal and colour as floats), whether one repeats, and whether a vertex
+  // list with a repeat was compiled before the list was marked for loopback (kListLoopbackDeduplicated).
+  std::set<std::array<uint32_t, 11>> store_vertices;
+  bool store_repeats = false, deduplicated = false;
+  glm::dvec3 store_normal{0, 0, 1};
+  glm::dvec4 store_color{1, 1, 1, 1};
   // A glNormal or glColor a list runs outside its own glBegin/glEnd goes through Mesa's
   // immediate-mode vbo and stays pending there: a later primitive of the list writes its last values
   // to the state, and the next flush (a glGet, a glBegin) copies the pending ones over them

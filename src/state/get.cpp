@@ -45,8 +45,12 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     std::copy(glm::value_ptr(m), glm::value_ptr(m) + 16, out);
     n = 16, normalized = kFromFloat;
   };
-  if (pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL || pname == GL_CURRENT_TEXTURE_COORDS || pname == GL_EDGE_FLAG)
-    flush_current();  // FLUSH_CURRENT
+  // FLUSH_CURRENT; inside a GL_COMPILE_AND_EXECUTE list's wrapped primitive (the only glBegin a query
+  // is taken in) Mesa's immediate mode copies nothing, so a colour sent there is not tracked by
+  // colour material either (repro list_wrap_query_copies_nothing.txt).
+  if ((pname == GL_CURRENT_COLOR || pname == GL_CURRENT_NORMAL || pname == GL_CURRENT_TEXTURE_COORDS ||
+       pname == GL_EDGE_FLAG) && !in_begin_)
+    flush_current();
   switch (pname) {
     // The float context reports its float matrices, as Mesa does: the ones it draws with.
     case GL_MODELVIEW_MATRIX: mat(modelview()); break;

@@ -18,6 +18,7 @@ void APIENTRY ArrayElement(GLint i) {
   Context* c = C();
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
+    if (!c->list_state().open) c->end_list_node();  // its values compile as opcodes: a flush
     if (i >= 0) c->compile_element(*l, i);
     if (!c->list_executes() || i < 0) return;
     if (c->list_state().open) return c->compile_element(c->list_held_back(), i);  // held back
@@ -41,7 +42,7 @@ void APIENTRY DrawArrays(GLenum m, GLint f, GLsizei n) {
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     c->compile_elements(*l, m, n, nullptr, f);
-    if (c->list_executes()) c->compile_elements(c->list_held_back(), m, n, nullptr, f, false);  // held back
+    if (c->list_executes()) c->compile_elements(c->list_held_back(), m, n, nullptr, f);  // held back
     return;
   }
   c->DrawArrays(m, f, n);
@@ -51,7 +52,7 @@ void APIENTRY DrawElements(GLenum m, GLsizei n, GLenum t, const GLvoid* i) {
   if (!c) return;
   if (DisplayList* l = c->list_recording()) {
     c->compile_draw_elements(*l, m, n, t, i);
-    if (c->list_executes()) c->compile_draw_elements(c->list_held_back(), m, n, t, i, false);  // held back
+    if (c->list_executes()) c->compile_draw_elements(c->list_held_back(), m, n, t, i);  // held back
     return;
   }
   c->DrawElements(m, n, t, i);
@@ -225,7 +226,13 @@ void APIENTRY CallList(GLuint l) {
   Context* c = C();
   if (!c) return;
   if (DisplayList* rec = c->list_recording()) {
+    // Mesa's compiler forgets what the list compiled outside its glBegin (invalidate_saved_current_state),
+    // and inside the list's glBegin falls back to replaying the list through immediate mode.
+    if (c->list_state().open) c->mark_loopback();
+    c->end_list_node();
     rec->record<CallListRecorded>(l);
+    rec->calls.push_back(l);
+    c->list_state().outside_attributes = 0;
     if (!c->list_executes()) return;
     if (!c->list_state().open) c->run_held_back();
   }

@@ -63,6 +63,7 @@ bool compiled_only(const A&... a) {
   // then glGet of GL_CURRENT_NORMAL; repro list_attribute_outside_begin.txt).
   constexpr bool begin_or_end = same_entry<Fn, &Begin>() || same_entry<Fn, &End>();
   if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
+    c->end_list_node();  // Mesa's vertex lists: display_list.cpp, Context::start_list_node
     l->record<Fn>(a...);
     if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1);
     if constexpr (same_entry<Fn, &ColorValues>()) c->mark_list_attribute(*l, 2);
@@ -80,7 +81,7 @@ bool compiled_only(const A&... a) {
   if constexpr (K == ListKind::Vertex) {
     if constexpr (same_entry<Fn, &Begin>())
       ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
-      ls.trailing = 0, ls.wrapped = false, ++ls.prims;
+      ls.trailing = 0, ls.wrapped = false, ++ls.prims, ls.wrap_copies = 0, ls.closing_loop = ls.loop_restarted = false;
     if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
     if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
     if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
@@ -88,14 +89,19 @@ bool compiled_only(const A&... a) {
       // A glEnd without its glBegin in the list: Mesa records it, and in GL_COMPILE_AND_EXECUTE
       // executes it now as a state call (measured: GL_INVALID_OPERATION after a refused glBegin).
       if (!ls.open) {
+        c->end_list_node();
         l->record<Fn>(a...);
         if (!c->list_executes()) return true;
         c->run_held_back();
         return false;
       }
-      ls.open = false;
+      ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
       if (ls.primitive_vertices < fewest_vertices(ls.open_mode)) l->incomplete = true;
     }
+  }
+  if constexpr (same_entry<Fn, &Begin>()) c->start_list_node(false);
+  if constexpr (K != ListKind::Vertex) {
+    if (!ls.open) c->end_list_node();
   }
   l->record<Fn>(a...);
   [[maybe_unused]] const int trailing = ls.had_vertex ? ls.trailing : 0;  // what glEnd drops (Context::list_trailing)
@@ -109,7 +115,17 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &TexCoordValues>()) kind = 4;
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
     c->hold_back(kind, size);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
+    // The values entering the store, for the repeats Mesa's compiler removes (display_list.cpp).
+    if constexpr (same_entry<Fn, &NormalValues>()) c->store_vertex(kind, glm::dvec4(a..., 0.0));
+    if constexpr (same_entry<Fn, &VertexValues>() || same_entry<Fn, &ColorValues>()) {
+      const auto v = std::tie(a...);
+      c->store_vertex(kind, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
+    }
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
+    if constexpr (same_entry<Fn, &VertexValues>()) {
+      c->note_loop_first_vertex(*l);
+      if (c->list_executes()) c->note_loop_first_vertex(c->list_held_back());
+    }
     if constexpr (same_entry<Fn, &End>()) {
       if (c->list_executes()) c->list_primitive_end(c->list_held_back(), trailing);
       ls.had_vertex = false, ls.trailing = 0;
