@@ -293,6 +293,7 @@ const std::vector<KnownDeviation>& known_deviations() {
        true},
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
       drawn("mesa-list-incomplete-fed-back", state::kListIncompleteFedBack),  // row 66
+      drawn("mesa-list-padded-quad-drawn", state::kListPaddedQuadDrawn),      // row 70
       // Row 66: the crash, read from the stream (Mesa takes a glRenderMode(GL_SELECT) soft refuses
       // without a buffer, so soft may be drawing where Mesa feeds back).
       {"mesa-list-incomplete-fed-back-crash",

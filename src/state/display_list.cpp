@@ -247,7 +247,7 @@ void Context::hold_back(int kind, int size) {
     // The part of the primitive the wrap cut off is a primitive of its own in the list: too short to
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
-    if (lists_.vertices > 0 && lists_.vertices < fewest_vertices(lists_.open_mode)) lists_.compiling.incomplete = true;
+    if (lists_.vertices > 0) lists_.compiling.note_primitive(lists_.open_mode, lists_.vertices);
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
     if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
     split_list_node();  // the vertex list before the wrap is compiled first, then marked
@@ -374,6 +374,12 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
+  // Measured in GL_RENDER (repro list_quad_of_three_drawn.txt): a GL_QUADS or GL_QUAD_STRIP of
+  // three, from glBegin/glEnd or a compiled glDrawArrays, draws the triangle of the three when the
+  // list is called (not executing in GL_COMPILE_AND_EXECUTE, nor in immediate mode); GL_TRIANGLES of
+  // two and a quad strip of five draw what GL says. Longer GL_QUADS were not measured apart from a
+  // second finding: a self-intersecting quad in a list splits otherwise than drawn at once (open).
+  if (it->second.padded_quad && render_mode_ == GL_RENDER) deviations_.insert(kListPaddedQuadDrawn);
   if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
   const bool outer = lists_.replaying_loopback;
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
@@ -502,7 +508,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
       l.record<list_loop_first_vertex>();
   }
   lists_.compiling_draw = false;
-  if (&l == &lists_.compiling && (count < fewest_vertices(mode) || !vertex_array_.enabled)) l.incomplete = true;
+  if (&l == &lists_.compiling) l.note_primitive(mode, vertex_array_.enabled ? int(count) : 0);
   if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode

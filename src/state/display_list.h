@@ -43,6 +43,12 @@ inline constexpr const char* kListLineLoopCurrent =
     "to the last values sent";
 
 // Row 66 (docs/deviations.md): named, not modelled.
+// Row 70 (docs/deviations.md): named, not modelled (Context::call_one_list).
+inline constexpr const char* kListPaddedQuadDrawn =
+    "a display list holding a GL_QUADS or GL_QUAD_STRIP of three vertices (a glBegin/glEnd or a compiled draw), "
+    "called in GL_RENDER: Mesa's list playback pads the quad with its last vertex and draws the triangle of the "
+    "three; soft draws nothing of it (GL: an incomplete quad is ignored)";
+
 inline constexpr const char* kListIncompleteFedBack =
     "a display list holding a primitive with fewer vertices than its mode draws (a glBegin/glEnd or a compiled "
     "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
@@ -97,8 +103,14 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, calls.clear(); }
+  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false, calls.clear(); }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
+  bool padded_quad = false;  // a GL_QUADS or GL_QUAD_STRIP of three vertices (kListPaddedQuadDrawn)
+  // Notes a primitive of `mode` with `vertices` that compiled into the list.
+  void note_primitive(GLenum mode, int vertices) {
+    padded_quad |= (mode == GL_QUADS || mode == GL_QUAD_STRIP) && vertices == 3;
+    if (vertices < fewest_vertices(mode)) incomplete = true;
+  }
   // Mesa replays the list's vertex lists through immediate mode (vbo_save's UseLoopback: display_list.cpp,
   // Context::mark_loopback), where a compiled draw's values become current.
   bool loopback = false;

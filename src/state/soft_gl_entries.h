@@ -96,7 +96,7 @@ bool compiled_only(const A&... a) {
         return false;
       }
       ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
-      if (ls.primitive_vertices < fewest_vertices(ls.open_mode)) l->incomplete = true;
+      l->note_primitive(ls.open_mode, ls.primitive_vertices);
     }
   }
   if constexpr (same_entry<Fn, &Begin>()) c->start_list_node(false);
