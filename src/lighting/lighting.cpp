@@ -141,7 +141,7 @@ inline Lit<T> light_impl(const Prepared<T>& c, const V4<T>& p4, const V3<T>& n, 
   // A key without the specular term (every light's specular times the material's is 0) still has
   // it where Mesa's result shows it: Mesa's program keys on no colour, so it raises n.h to the
   // shininess whatever the colour, and a power overflowing to infinity times the colour's 0 is a
-  // NaN, which the clamp makes 1 (docs/deviations.md, "a zero specular colour"). Since n.h <= |n|
+  // NaN, which the clamp makes 1 (docs/deviations.md, row 69). Since n.h <= |n|
   // and the shininess is at most 128, only a normal longer than 2 (not normalised, or scaled by
   // the modelview) can overflow: the term is computed for those alone, below 2 it adds a zero.
   const bool long_normal = !S::specular(key) && glm::dot(n, n) >= kLongNormal2<T>;

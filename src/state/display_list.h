@@ -43,6 +43,12 @@ inline constexpr const char* kListLineLoopCurrent =
     "to the last values sent";
 
 // Row 66 (docs/deviations.md): named, not modelled.
+// Row 71 (docs/deviations.md): named, not modelled (Context::note_node_primitive).
+inline constexpr const char* kListTwoThenQuadCrash =
+    "a display list's vertex list holding a GL_TRIANGLES, GL_TRIANGLE_FAN or GL_POLYGON of two vertices (sent, or "
+    "the two a wrapped polygon copies) followed by a GL_QUADS of one vertex: Mesa 22.3 corrupts its heap compiling "
+    "it (glibc aborts at that flush, a later call or the read-back); soft compiles it";
+
 // Row 70 (docs/deviations.md): named, not modelled (Context::call_one_list).
 inline constexpr const char* kListPaddedQuadDrawn =
     "a display list holding a GL_QUADS or GL_QUAD_STRIP of three vertices (a glBegin/glEnd or a compiled draw), "
@@ -191,6 +197,10 @@ struct ListState {
   // last primitive begun is a compiled draw (Mesa's no_current_update).
   bool node_open = false;
   bool node_draw = false;
+  // The primitive before the open one in the open vertex list: its mode (0: none) and the vertices
+  // it has there (kListTwoThenQuadCrash, Context::note_node_primitive).
+  GLenum node_last_mode = 0;
+  int node_last_count = 0;
   // Compiling: the vertices of the store since it was last compiled, as Mesa's compiler compares them
   // (the bits of the position, normal and colour as floats), whether one repeats, and whether a vertex
   // list with a repeat was compiled before the list was marked for loopback (kListLoopbackDeduplicated).

@@ -95,6 +95,7 @@ bool compiled_only(const A&... a) {
         c->run_held_back();
         return false;
       }
+      c->note_node_primitive(false);
       ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
       l->note_primitive(ls.open_mode, ls.primitive_vertices);
     }
