@@ -37,6 +37,7 @@ bool Context::outside_begin_end() {
 }
 
 void Context::flush_vertices() {
+  flush_pending(false);
   if (vertices_kept_) vertices_kept_ = false, flush_stored();
 }
 

@@ -257,12 +257,16 @@ class Context {
   // Mesa's vertex lists as the compiled list records them (display_list.cpp, Context::start_list_node).
   void start_list_node(bool draw);  // a primitive begins in the list's vertex store (a compiled draw or not)
   void end_list_node();             // the store is compiled into a vertex list (a flush)
-  void split_list_node();           // ... and its open primitive goes on in the next (a wrap)
+  void split_list_node(int joining = 0);           // ... and its open primitive goes on in the next (a wrap)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
   void node_begins();               // run from a list: a vertex list starts
-  void node_ends(bool draw, int loop);  // run from a list: it ends; a last primitive drawn from arrays copies
+  void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies
                                         // nothing, a closed line loop (loop: the attributes) replays its first vertex
-  void node_splits(bool draw);      // run from a list: a wrap ends it inside a primitive
+  void node_splits(bool draw, int copy, int joining);  // run from a list: a wrap ends it inside a primitive (copy: Context::split_list_node)
+  // Mesa's immediate-mode flushes of the values a list left pending (display_list.cpp, Context::flush_pending).
+  void begin_list_calls();        // the outermost glCallList(s) begins (its FLUSH_CURRENT)
+  void flush_pending(bool draw, int joining = 0);  // a vertex list starts (FLUSH_FOR_DRAW) or a state call flushes (FLUSH_VERTICES)
+  void apply_pending();           // the pending values reach the state
   void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
   void close_store();               // the store is compiled into a vertex list: its repeats counted
   void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive

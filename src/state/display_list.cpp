@@ -38,14 +38,14 @@ void list_end() {
 void list_node_begins() {
   if (Context* c = Context::current()) c->node_begins();
 }
-void list_node_ends(bool draw, int loop) {
-  if (Context* c = Context::current()) c->node_ends(draw, loop);
+void list_node_ends(bool draw, int loop, bool copy) {
+  if (Context* c = Context::current()) c->node_ends(draw, loop, copy);
 }
 void list_stray_end() {
   if (Context* c = Context::current()) c->stray_end();
 }
-void list_node_split(bool draw) {
-  if (Context* c = Context::current()) c->node_splits(draw);
+void list_node_split(bool draw, int copy, int joining) {
+  if (Context* c = Context::current()) c->node_splits(draw, copy, joining);
 }
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
@@ -69,7 +69,7 @@ void Context::mark_list_attribute(DisplayList& l, int kind) {
 
 void Context::keep_pending(int kind) {
   if (!lists_.calling) return;  // GL_COMPILE_AND_EXECUTE's own calls: measured to agree already
-  lists_.pending |= kind;
+  lists_.pending |= kind, lists_.need_update = true;
   if (kind == 1) lists_.pending_normal = normal_;
   if (kind == 2) lists_.pending_color = color_;  // its alpha as the vbo's colour size left it
 }
@@ -252,7 +252,7 @@ void Context::hold_back(int kind, int size) {
     if (lists_.vertices > 0) lists_.compiling.note_primitive(lists_.open_mode, lists_.vertices);
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
     if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
-    split_list_node();  // the vertex list before the wrap is compiled first, then marked
+    split_list_node(kind > 0 ? kind & 3 : 0);  // the vertex list before the wrap is compiled first, then marked
     if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
     if (list_executes()) run_held_back(false);
     lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies;
@@ -355,7 +355,7 @@ void Context::EndList() {
 
 void Context::CallList(GLuint list) {
   if (lists_.calling) return call_one_list(list);
-  lists_.calling = true, lists_.pending = 0;
+  begin_list_calls();
   call_one_list(list);
   end_list_calls();
 }
@@ -364,7 +364,7 @@ void Context::end_list_calls() {
   // The colour reaches the state (and a tracked material) at soft's next flush, as Mesa's does.
   if (lists_.pending & 1) normal_ = lists_.pending_normal;
   if (lists_.pending & 2) color_ = lists_.pending_color;
-  lists_.calling = false, lists_.pending = 0;
+  lists_.calling = lists_.mesa_inside = false, lists_.pending = 0;
 }
 
 void Context::call_one_list(GLuint list) {
@@ -431,8 +431,7 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
     run_held_back();
   }
   const bool outermost = !lists_.calling;
-  lists_.calling = true;
-  if (outermost) lists_.pending = 0;
+  if (outermost) begin_list_calls();
   const GLuint base = lists_.base;
   for (GLsizei i = 0; i < n; ++i) CallList(base + list_offset(type, lists, i));
   if (outermost) end_list_calls();
@@ -470,6 +469,10 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
   if (e != GL_NO_ERROR) return compile_error(l, e);
+  // A draw of no vertex is a primitive of Mesa's store too (save_DrawArrays begins it): its vertex
+  // list's FLUSH_FOR_DRAW flushes the values pending when the list runs (Context::flush_pending).
+  // Inside the list's own glBegin it also ends that primitive on Mesa (not modelled).
+  if (count == 0 && &l == &lists_.compiling && !lists_.open) start_list_node(true);
   if (count == 0) return;
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
   // store, so the elements grow the list's vertex format as calls do (hold_back).
@@ -564,7 +567,8 @@ void Context::end_list_node() {
   if (lists_.node_open)
     lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
                                                               : lists_.vertices == 0 || lists_.loop_restarted ? 8  // row 68
-                                                                                     : lists_.attributes & 3),
+                                                                                     : lists_.attributes & 3,
+                                            !lists_.node_draw && lists_.attributes != 0),
         lists_.node_open = false;
   close_store();
   // The store and its format are emptied in GL_COMPILE too (GL_COMPILE_AND_EXECUTE's run_held_back
@@ -604,26 +608,74 @@ void Context::close_store() {
 // glDrawArrays whose first element's position grows the format after another draw, lit: seed 4242
 // stream 701 shrunk), so nothing is put back in the middle of the primitive; one from glBegin copies
 // its values so far, the start of the next.
-void Context::split_list_node() {
+void Context::split_list_node(int joining) {
   lists_.node_last_mode = 0;  // the open primitive's rest starts the next vertex list
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw);
+  // Whether the vertex list before the wrap copies its last vertex to the current values (an attribute
+  // besides the position in its format, its last primitive from glBegin), and so leaves Mesa inside
+  // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
+  const int copy = lists_.node_draw || lists_.attributes == 0 ? 0 : lists_.open ? 2 : 1;
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining);
   close_store();
 }
 
-void Context::node_begins() { node_values_ = current_values(); }
+void Context::node_begins() {
+  flush_pending(true);
+  node_values_ = current_values();
+}
 
-void Context::node_ends(bool draw, int loop) {
+void Context::node_ends(bool draw, int loop, bool copy) {
   if (lists_.replaying_loopback) {
     if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
     if (loop & 1) normal_ = lists_.loop_first_normal;
     if (loop & 2) color_ = lists_.loop_first_color;
   } else if (draw) {
     restore(node_values_);
+  } else if (copy) {
+    lists_.mesa_inside = false;  // its last primitive ended in it
   }
 }
 
-void Context::node_splits(bool draw) {
+void Context::node_splits(bool draw, int copy, int joining) {
+  if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
+  flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
   if (!draw) node_values_ = current_values();
+}
+
+// Mesa's flushes of the values a list left pending (the rule of the unmerged reading of vbo_save,
+// docs/fidelity.md; vbo_exec_api.c, vbo_exec_FlushVertices_internal): a glNormal or glColor the list
+// runs outside its glBegin/glEnd goes to the immediate-mode vbo, whose NeedFlush then asks for
+// FLUSH_UPDATE_CURRENT. The first flush (a vertex list's FLUSH_FOR_DRAW; glCallList's own
+// FLUSH_CURRENT before the list) copies it to the current values and leaves NeedFlush =
+// ~FLUSH_UPDATE_CURRENT, a flush of stored vertices; the next of those (a vertex list's
+// FLUSH_FOR_DRAW, a state call's FLUSH_VERTICES) copies it again and forgets it (the vbo's format
+// reset). So the pending value wins over the vertex lists run after the first flush and before the
+// second, and loses to those after. Nothing flushes while a vertex list's copy left Mesa inside a
+// wrapped primitive, nor in a list replayed through immediate mode (not modelled: list_loopback).
+// Measured through seed 4242 streams 339 and 564 and seed 2026 stream 486's colour (repro
+// list_pending_flushed_by_vertex_lists.txt); whatever is still pending at the end of the outermost
+// glCallList reaches the state there (end_list_calls).
+void Context::begin_list_calls() {
+  lists_.calling = true, lists_.pending = 0, lists_.need_update = lists_.mesa_inside = false;
+  lists_.stored_bit = vertices_kept_ || color_size_ > 0 || normal_in_format_;
+}
+
+void Context::apply_pending() {
+  if (lists_.pending & 1) normal_ = node_values_.normal = lists_.pending_normal;
+  if (lists_.pending & 2) color_ = node_values_.color = lists_.pending_color;
+}
+
+// joining: the attribute whose call wrapped the store, recorded before the wrap but in the next
+// vertex list on Mesa, so its value stays.
+void Context::flush_pending(bool draw, int joining) {
+  // (soft is inside the list's primitive at a wrap, where Mesa is only after a copy: mesa_inside)
+  if (!lists_.calling || lists_.replaying_loopback || lists_.mesa_inside || (!draw && in_begin_)) return;
+  if (!lists_.stored_bit && !(draw && lists_.need_update)) return;
+  const int pending = lists_.pending;
+  lists_.pending &= ~joining;
+  apply_pending();
+  lists_.pending = pending;
+  if (lists_.stored_bit) lists_.pending = 0, lists_.stored_bit = lists_.need_update = false;
+  else lists_.need_update = false, lists_.stored_bit = true;
 }
 
 void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, GLenum type, const void* indices) {

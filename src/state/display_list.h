@@ -214,6 +214,9 @@ struct ListState {
   // (display_list.cpp, Context::end_list_calls).
   bool calling = false;  // inside the outermost glCallList or glCallLists
   int pending = 0;       // bits: normal 1, colour 2
+  // Running, Mesa's NeedFlush for them (Context::flush_pending): FLUSH_UPDATE_CURRENT and
+  // FLUSH_STORED_VERTICES, and whether a vertex list's copy left Mesa inside glBegin/glEnd (a wrap).
+  bool need_update = false, stored_bit = false, mesa_inside = false;
   bool compiling_draw = false;  // a glDrawArrays or glDrawElements being compiled
   glm::dvec3 pending_normal{0, 0, 1};
   glm::dvec4 pending_color{1, 1, 1, 1};
