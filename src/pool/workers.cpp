@@ -40,6 +40,25 @@ void Workers::run_impl(void* fn, void (*call)(void*, int), int shares) {
     for (int share = 0; share < shares; ++share) call(fn, share);
     return;
   }
+  start(fn, call, shares);
+  take_shares(generation_.load());
+  // The shares are about equal: the others finish soon after this one, so spin rather than sleep.
+  while (done_.load(std::memory_order_acquire) != shares) spin_pause();
+}
+
+void Workers::post(void (*fn)(void*), void* arg) {
+  posted_fn_ = fn, posted_arg_ = arg;
+  start(this, [](void* w, int) {
+    auto* self = static_cast<Workers*>(w);
+    self->posted_fn_(self->posted_arg_);
+  }, 1);
+}
+
+void Workers::wait_posted() {
+  while (!posted_done()) spin_pause();
+}
+
+void Workers::start(void* fn, void (*call)(void*, int), int shares) {
   uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -50,9 +69,6 @@ void Workers::run_impl(void* fn, void (*call)(void*, int), int shares) {
     generation_.store(generation);
   }
   wake_.notify_all();
-  take_shares(generation);
-  // The shares are about equal: the others finish soon after this one, so spin rather than sleep.
-  while (done_.load(std::memory_order_acquire) != shares) spin_pause();
 }
 
 void Workers::take_shares(uint64_t generation) {

@@ -1,5 +1,6 @@
 // A fork-join pool kept for the life of a context: a draw hands each thread one share of its work
-// and waits for all of them. Starting threads per draw cost more than small draws' work.
+// and waits for all of them. Starting threads per draw cost more than small draws' work. One job
+// may also run beside the caller (post).
 #pragma once
 #include <atomic>
 #include <condition_variable>
@@ -28,9 +29,16 @@ class Workers {
   void run(F&& fn, int shares = 0) {
     run_impl(&fn, [](void* f, int share) { (*static_cast<std::remove_reference_t<F>*>(f))(share); }, shares > 0 ? shares : size());
   }
+  // Starts fn(arg) on one of the started threads and returns at once (at least two threads): the
+  // caller goes on with other work, and neither run nor post may come before wait_posted. Immediate
+  // mode's early draws (state/immediate.cpp). The caller keeps arg alive until wait_posted returns.
+  void post(void (*fn)(void*), void* arg);
+  bool posted_done() const { return done_.load(std::memory_order_acquire) == shares_; }
+  void wait_posted();  // what fn wrote is visible after it
 
  private:
   void run_impl(void* fn, void (*call)(void*, int), int shares);
+  void start(void* fn, void (*call)(void*, int), int shares);  // run_impl's half before the caller takes shares
   void loop();
   void take_shares(uint64_t generation);
 
@@ -46,6 +54,8 @@ class Workers {
   bool stop_ = false;
   void* fn_ = nullptr;
   void (*call_)(void*, int) = nullptr;
+  void (*posted_fn_)(void*) = nullptr;
+  void* posted_arg_ = nullptr;
 };
 
 }  // namespace ffc::pool

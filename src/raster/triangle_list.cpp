@@ -222,6 +222,16 @@ void draw_bins(const List& l, const detail::Bands& mine, const uint32_t* const* 
   for_each_binned(l, mine, in, counts, shares, [&](const std::array<size_t, 3>& vi, const Snapped (&p)[3]) { draw_one<D>(l, vi, p, mine); });
 }
 
+}  // namespace
+
+void TriangleBins::reserve(size_t triangles, int threads) {
+  const size_t units = size_t(std::max(1, std::min(threads, kMaxThreads)));
+  if (lists.size() < units * units) lists.resize(units * units);
+  for (std::vector<uint32_t>& l : lists) l.reserve(triangles / units + 1 + kBinSlack);
+}
+
+namespace {
+
 void draw_part(const List& l, pool::Workers& workers, TriangleBins& bins, const ClearRequest& clear) {
   const State& s = l.s;
   const size_t triangles = l.count;

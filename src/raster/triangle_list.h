@@ -5,6 +5,7 @@
 // the box kernel (raster/wide/) when the state
 // is smooth colour without secondary colour, culling or two-sided lighting, one by one otherwise.
 #pragma once
+#include <algorithm>
 #include <climits>
 #include <cstdint>
 #include <vector>
@@ -41,6 +42,14 @@ struct ListVertices {
     hot.resize(n), snapped.resize(n), clip.resize(n);
     back.resize(two_side ? n : 0), front_sec.resize(secondary ? n : 0), back_sec.resize(two_side && secondary ? n : 0);
   }
+  // At least n records (growing to `room`, n at least, where it must grow), without touching those
+  // there are: growing value-initialises the new records.
+  void grow(size_t n, size_t room, bool two_side, bool secondary) {
+    const size_t have = hot.size();
+    if (have < n || back.size() != (two_side ? have : 0) || front_sec.size() != (secondary ? have : 0) ||
+        back_sec.size() != (two_side && secondary ? have : 0))
+      resize(std::max(n, room), two_side, secondary);
+  }
 };
 
 // Vertices [first, first + count): window and snapped positions from their clip coordinates
@@ -50,6 +59,10 @@ void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State
 // The binned triangles of a draw, kept between draws so that steady state allocates nothing.
 struct TriangleBins {
   std::vector<std::vector<uint32_t>> lists;
+  // Room for a draw of up to `triangles` on `threads` threads, so that it allocates nothing: a
+  // draw whose size varies from frame to frame (immediate mode's last part after early draws)
+  // would otherwise grow the lists whenever it outgrows every earlier one.
+  void reserve(size_t triangles, int threads);
 };
 
 // Draws triangle t from vertices (idx[3t], idx[3t+1], idx[3t+2]), or (3t, 3t+1, 3t+2) when idx is

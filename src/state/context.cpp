@@ -6,6 +6,8 @@
 // assembly primitive.cpp.
 #include "state/context.h"
 
+#include <cstdlib>
+
 #include "simd/target.h"
 
 namespace ffc::state {
@@ -16,7 +18,10 @@ Context::Context(int width, int height, Precision precision)
     : fb_(width, height), precision_(precision), viewport_(0, 0, width, height) {
   lights_[0].diffuse = lights_[0].specular = glm::dvec4(1);
   simd::configure_from_environment();  // FFCOMPAT_SIMD / FFCOMPAT_SCALAR, before the first kernel
+  if (const char* e = std::getenv("FFCOMPAT_EARLY_CORNERS"); e && *e) early_corners_ = std::strtoull(e, nullptr, 10);
 }
+
+Context::~Context() { early_join(); }
 
 GLenum Context::GetError() {
   if (in_begin_) {  // Mesa: returns 0 and records INVALID_OPERATION

@@ -10,6 +10,7 @@
 #include <GL/gl.h>
 
 #include <array>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <map>
 #include <memory>
@@ -92,6 +93,7 @@ struct ClientArray {
 class Context {
  public:
   Context(int width, int height, Precision precision = Precision::Float);
+  ~Context();  // after immediate mode's early job in flight (it reads the context's lists)
 
   raster::Framebuffer& framebuffer() {  // as drawn: a pending glClear done first
     flush_clear();
@@ -108,9 +110,15 @@ class Context {
   // the triangle-list path is tested against. The picture does not change.
   void set_triangle_lists(bool on) { triangle_lists_ = on; }
   void set_threads(int n) {
+    early_join();
     threads_ = n < 1 ? 1 : n;
+    bins_reserved_ = 0;
     workers_.reset();
   }  // the rasterizer's; the picture does not change
+  // Immediate mode's early draws (immediate.cpp): a glBegin(GL_TRIANGLES) hands its complete
+  // triangles to a thread of its own every `corners` corners sent (0: never; the default from
+  // FFCOMPAT_EARLY_CORNERS, else kEarlyCorners). The picture does not change.
+  void set_early_corners(size_t corners) { early_corners_ = corners; }
   // Inline: every entry point reads it (a call per glVertex cost as much as the store it guards).
   static Context* current() { return current_; }
   static void make_current(Context* c);
@@ -376,8 +384,14 @@ class Context {
   // The triangle-list path (glDrawArrays / glDrawElements with GL_TRIANGLES, rendering, float):
   // array elements [first, first + count) lit into list_vertices_, then drawn from shared vertices.
   bool triangle_list_path(GLenum mode) const;
+  // Vertices fetch(first + o), o in [0, count), lit and mapped into list_vertices_[at + o]
+  // (list_vertices_ holds at + count after it); from_arrays: fetch is array_vertex.
   template <class Fetch>
-  void stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays);  // from_arrays: fetch is array_vertex
+  void stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays, size_t at = 0);
+  // One thread's part of it: vertices [lo, hi) of the same numbering; `zero` set by a zero normal.
+  template <class Fetch>
+  void stage_list_part(const Fetch& fetch, GLint first, GLint lo, GLint hi, bool from_arrays, size_t at,
+                       const raster::State& rs, bool* zero);
   void arrays_to_list(GLint first, GLint count);  // array elements [first, first + count)
   void immediate_to_list();                       // immediate mode's vertices kept for the list
   void draw_triangle_list(const uint32_t* indices, size_t triangles);
@@ -572,6 +586,49 @@ class Context {
   std::array<CornerSlot, size_t(1) << kCornerSlotBits> corner_slots_{};
   uint32_t corner_generation_ = 0;
   void keep_list_vertex(float x, float y, float z, float w);
+  // Early draws: inside a long glBegin(GL_TRIANGLES) on the triangle list the complete triangles
+  // are lit and drawn on a worker thread (pool::Workers::post) while the application sends the next corners; glEnd lights
+  // and draws the rest on the workers, after them, so every pixel sees the triangles in order.
+  // While a job is in flight the application's thread changes nothing it reads: the entries and
+  // corners it reads are complete and never rewritten (a wrap rewrites only the unfinished
+  // triangle's corners), the lists do not grow past their capacity (early_join first), and every
+  // call that could change the lighting's constants or the matrices joins first (vbo_wrap,
+  // leave_triangle_list, validate_matrices, End). Only where the lighting's constants stay those
+  // of glEnd: not for colour material before a glColor inside the glBegin (cm_per_vertex()
+  // would change with it).
+  static constexpr size_t kEarlyCorners = 3072;
+  size_t early_corners_ = kEarlyCorners;
+  struct EarlyDraw {
+    size_t next = SIZE_MAX;  // list_corner_.size() at which to try a handoff
+    size_t lit = 0;          // entries lit and mapped into list_vertices_
+    size_t drawn = 0;        // triangles drawn
+    bool in_flight = false;  // a job posted and not yet joined
+    // The job, taken on the application's thread: entries [first, lit) and triangles
+    // [tri_first, drawn), read through pointers that stay valid while it runs.
+    size_t first = 0, tri_first = 0;
+    const glm::vec4* pos = nullptr;
+    const glm::dvec3* normal = nullptr;  // null: cur_normal for every entry
+    const glm::dvec4* color = nullptr;   // null: cur_color
+    const uint32_t* corners = nullptr;
+    glm::dvec3 cur_normal{0};
+    glm::dvec4 cur_color{0};
+    raster::State rs;
+    raster::ClearRequest clear;
+    // What it found, merged by early_join.
+    bool zero_normal = false, sliver = false;
+  } early_;
+  // Whether corners drawn early lay after the last wrap (End's "stored"), once leave_triangle_list
+  // has dropped them from the primitive.
+  bool early_after_wrap_ = false;
+  pool::Workers early_workers_{1};  // the job's draw: one share, on its own thread
+  raster::TriangleBins early_bins_;
+  size_t bins_reserved_ = 0;  // triangles bins_ and early_bins_ have room for
+  void early_handoff();
+  void early_job();
+  void early_join() {
+    if (early_.in_flight) early_wait();
+  }
+  void early_wait();
   // glDrawArrays(GL_TRIANGLES) of a soup (soup.cpp): its repeated corners lit once, drawn from
   // indices. False: not taken (small, or arrays the stage does not read as floats).
   bool draw_soup(GLint first, GLsizei count);

@@ -58,9 +58,11 @@ void Context::Color(double r, double g, double b, double a, int components) {
 // count (an even number of triangles drawn keeps the strip's winding), or every vertex before its
 // first whole primitive. A line loop's wrap is named, not modelled (kLineLoopWrap).
 void Context::vbo_wrap(bool alpha_one) {
+  early_join();  // it may rewrite the unfinished triangle's corners and add entries
   light_pending();
   const size_t n = immediate_list_ ? list_corner_.size() : verts_.size();
   if (n == 0) return;
+  early_after_wrap_ = false;
   size_t keep = 0;
   bool shared = false;  // the kept vertices belong to primitives already drawn too
   switch (prim_mode_) {
@@ -186,6 +188,9 @@ void Context::Begin(GLenum mode) {
   immediate_list_ = triangle_list_path(mode);
   store_corners_ = immediate_list_ && !spec_ && !sink_draws();
   list_pos_.clear(), list_normal_.clear(), list_color_.clear(), list_corner_.clear();
+  early_.lit = early_.drawn = 0;
+  early_after_wrap_ = false;
+  early_.next = store_corners_ && early_corners_ > 0 && threads_ > 1 && lists_.depth == 0 ? early_corners_ : SIZE_MAX;
   if (immediate_list_ && ++corner_generation_ == 0) {  // wrapped: no slot may look current
     std::fill(corner_slots_.begin(), corner_slots_.end(), CornerSlot{});
     corner_generation_ = 1;
@@ -223,8 +228,13 @@ void Context::keep_list_vertex(float x, float y, float z, float w) {
   bool same = (s.generation == corner_generation_) & (s.pos[0] == p[0]) & (s.pos[1] == p[1]);
   if (normal) same &= (s.normal[0] == n[0]) & (s.normal[1] == n[1]) & (s.normal[2] == n[2]);
   if (same && (!color || std::memcmp(&list_color_[s.entry], &color_, sizeof color_) == 0)) {
+    if (early_.in_flight && list_corner_.size() == list_corner_.capacity()) early_join();  // it reads them
     list_corner_.push_back(s.entry);
     return;
+  }
+  if (early_.in_flight) {  // the job reads the lists: none may move while it runs
+    const auto full = [](const auto& v) { return v.size() == v.capacity(); };
+    if (full(list_pos_) || full(list_corner_) || (normal && full(list_normal_)) || (color && full(list_color_))) early_join();
   }
   const auto e = uint32_t(list_pos_.size());
   list_pos_.emplace_back(x, y, z, w);
@@ -232,13 +242,77 @@ void Context::keep_list_vertex(float x, float y, float z, float w) {
   if (color) list_color_.push_back(color_);
   list_corner_.push_back(e);
   s = {{p[0], p[1]}, {n[0], n[1], n[2]}, e, corner_generation_};
+  if (list_corner_.size() >= early_.next) early_handoff();  // checked on new entries only: a hit stays short
+}
+
+// Hands the triangles complete so far (and the entries not yet lit) to a worker thread, when it
+// is free; else tries again a little later.
+void Context::early_handoff() {
+  if (early_.in_flight) {
+    if (!workers().posted_done()) {
+      early_.next = list_corner_.size() + early_corners_ / 8;
+      return;
+    }
+    early_join();
+  }
+  // Colour material with no glColor yet inside this glBegin: the constants would change at the
+  // first one (cm_per_vertex()), and the triangles drawn early would have been lit without it.
+  if (lighting_ && color_material_ && !color_varies_) {
+    early_.next = SIZE_MAX;
+    return;
+  }
+  // At most two handoffs' worth at once: glEnd waits for the job in flight on one thread, and a
+  // job kept short leaves the rest to glEnd's threads when the calls outrun it.
+  const size_t triangles = std::min(list_corner_.size() / 3, early_.drawn + 2 * early_corners_ / 3);
+  update_vertex_constants();  // the job's stage reads them; nothing runs now
+  EarlyDraw& j = early_;
+  j.rs = raster_state();
+  // Room for every entry so far: growing value-initialises the new records, work the application's
+  // thread would do at every handoff, so it grows to the lists' capacity, and a frame that sends
+  // what the last one did finds it sized already (glEnd trims it to the entries there are).
+  list_vertices_.grow(list_pos_.size(), list_pos_.capacity(), j.rs.two_side, j.rs.add_secondary);
+  // The job's draws and glEnd's (of what is left, up to the whole primitive) allocate nothing
+  // once the lists have reached this glBegin's size.
+  if (list_corner_.capacity() / 3 > bins_reserved_) {
+    bins_reserved_ = list_corner_.capacity() / 3;
+    bins_.reserve(bins_reserved_, workers().size());
+    early_bins_.reserve(bins_reserved_, 1);
+  }
+  j.first = j.lit, j.lit = list_pos_.size();
+  j.tri_first = j.drawn, j.drawn = triangles;
+  j.pos = list_pos_.data();
+  j.normal = list_normal_.empty() ? nullptr : list_normal_.data();
+  j.color = list_color_.empty() ? nullptr : list_color_.data();
+  j.corners = list_corner_.data();
+  j.cur_normal = normal_, j.cur_color = color_;
+  j.clear = pending_clear_;
+  pending_clear_ = {};
+  j.in_flight = true;
+  j.next = triangles < list_corner_.size() / 3 ? list_corner_.size() : j.drawn * 3 + early_corners_;
+  workers().post([](void* c) { static_cast<Context*>(c)->early_job(); }, this);
+}
+
+void Context::early_wait() {
+  workers_->wait_posted();
+  early_.in_flight = false;
+  if (early_.zero_normal) deviations_.insert(kZeroNormal);
+  if (early_.sliver) deviations_.insert(kClippedSliver);  // docs/deviations.md row 63
+  early_.zero_normal = early_.sliver = false;
 }
 
 // Also lights the vertices kept for the batch: the caller is about to change what they read.
 void Context::leave_triangle_list() {
   if (immediate_list_) {
     immediate_list_ = store_corners_ = false;
-    for (const uint32_t e : list_corner_) {
+    early_join();
+    // The triangles drawn early are done: the rest of the primitive goes on without them, and
+    // whether corners came after the last wrap (End) counts them too.
+    const size_t dropped = 3 * early_.drawn;
+    if (dropped > wrap_start_) early_after_wrap_ = true;
+    wrap_start_ = wrap_start_ > dropped ? wrap_start_ - dropped : 0;
+    early_.next = SIZE_MAX;
+    for (size_t i = dropped; i < list_corner_.size(); ++i) {
+      const uint32_t e = list_corner_[i];
       const glm::dvec3 normal = normal_;
       const glm::dvec4 color = color_;
       // As they were at that glVertex (what was not kept is not read).
@@ -261,8 +335,10 @@ void Context::leave_triangle_list() {
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = store_corners_ = false;
+  early_join();
+  early_.next = SIZE_MAX;
   const size_t sent = immediate_list_ ? list_corner_.size() : verts_.size();
-  const bool stored = spec_ || lists_.depth > 0 || sink_draws() || sent > wrap_start_;
+  const bool stored = spec_ || lists_.depth > 0 || sink_draws() || sent > wrap_start_ || early_after_wrap_;
   if (stored && !spec_) vertices_kept_ = true;
   const auto flush = [&] {
     if (stored) flush_stored_keeping_format();
@@ -274,8 +350,8 @@ void Context::End() {
     return flush();
   }
   immediate_list_ = false;
-  immediate_to_list();
-  draw_triangle_list(list_corner_.data(), list_corner_.size() / 3);
+  immediate_to_list();  // the entries not lit early
+  draw_triangle_list(list_corner_.data() + 3 * early_.drawn, list_corner_.size() / 3 - early_.drawn);
   flush();
 }
 }  // namespace ffc::state

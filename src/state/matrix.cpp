@@ -64,6 +64,7 @@ void Context::MultMatrix(const glm::dmat4& m) {
 }
 
 void Context::validate_matrices() {
+  early_join();  // immediate mode's early job reads them (a call inside glBegin/glEnd gets here before its error)
   modelview_f_.back().analyse();
   texture_f_.back().analyse();
   // Mesa's _ModelProjectMatrix, with the flags of both (three rows when both are affine).

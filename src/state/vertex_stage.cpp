@@ -442,36 +442,43 @@ void Context::arrays_to_vertices(GLint first, GLint count) {
 }
 
 // The triangle-list path's vertices (float): count vertices, vertex o from fetch(first + o), lit
-// into list_vertices_ and mapped to the window.
+// into list_vertices_[at + o] and mapped to the window, on the threads.
 template <class Fetch>
-void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays) {
+void Context::stage_to_list(const Fetch& fetch, GLint first, GLint count, bool from_arrays, size_t at) {
   update_vertex_constants();
   const raster::State rs = raster_state();
+  list_vertices_.resize(at + size_t(count), rs.two_side, rs.add_secondary);
+  run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) { stage_list_part(fetch, first, lo, hi, from_arrays, at, rs, zero); });
+}
+
+// Vertices [lo, hi) of stage_to_list's numbering, on the calling thread; list_vertices_ is sized.
+// Also immediate mode's early job (immediate.cpp), on its own thread: it reads only the context's
+// constants, which stay as they are meanwhile.
+template <class Fetch>
+void Context::stage_list_part(const Fetch& fetch, GLint first, GLint lo, GLint hi, bool from_arrays, size_t at,
+                              const raster::State& rs, bool* zero) {
   raster::ListVertices& out = list_vertices_;
-  out.resize(size_t(count), rs.two_side, rs.add_secondary);
   // Read once: the stores below could alias the vectors' sizes, which would be loaded per vertex.
   const bool back = !out.back.empty(), front_sec = !out.front_sec.empty(), back_sec = !out.back_sec.empty();
-  run_stage(first, count, [&](GLint lo, GLint hi, bool* zero) {
-    const VertexStage<float> stage(*this, from_arrays);
-    StageOut<float, kBatch> s;
-    for (GLint b = lo; b < hi; b += kBatch) {
-      const int m = int(std::min<GLint>(kBatch, hi - b));
-      stage.run(fetch, b, m, s, zero, &out.clip[size_t(b - first)]);  // straight to the list
-      const size_t at = size_t(b - first);
-      for (int j = 0; j < m; ++j) {
-        const size_t o = at + size_t(j);
-        if (!lighting_) {
-          out.hot[o].color = glm::vec4(s.unlit[j]);
-          continue;
-        }
-        out.hot[o].color = s.colour(0, j);
-        if (back) out.back[o] = s.colour(1, j);
-        if (front_sec) out.front_sec[o] = s.colour(2, j);
-        if (back_sec) out.back_sec[o] = s.colour(3, j);
+  const VertexStage<float> stage(*this, from_arrays);
+  StageOut<float, kBatch> s;
+  for (GLint b = lo; b < hi; b += kBatch) {
+    const int m = int(std::min<GLint>(kBatch, hi - b));
+    const size_t o0 = at + size_t(b - first);
+    stage.run(fetch, b, m, s, zero, &out.clip[o0]);  // straight to the list
+    for (int j = 0; j < m; ++j) {
+      const size_t o = o0 + size_t(j);
+      if (!lighting_) {
+        out.hot[o].color = glm::vec4(s.unlit[j]);
+        continue;
       }
-      raster::map_list_vertices(out, at, size_t(m), rs);
+      out.hot[o].color = s.colour(0, j);
+      if (back) out.back[o] = s.colour(1, j);
+      if (front_sec) out.front_sec[o] = s.colour(2, j);
+      if (back_sec) out.back_sec[o] = s.colour(3, j);
     }
-  });
+    raster::map_list_vertices(out, o0, size_t(m), rs);
+  }
 }
 
 void Context::arrays_to_list(GLint first, GLint count) {
@@ -480,14 +487,32 @@ void Context::arrays_to_list(GLint first, GLint count) {
 
 // Immediate mode's kept vertices (process_vertex), as they were at each glVertex: what was not
 // kept is not read, and the current value stands in.
+// Those lit early (early_.lit) are in place already.
 void Context::immediate_to_list() {
+  const size_t lit = early_.lit;
   stage_to_list(
       [this](GLint i) {
         const size_t k = size_t(i);
         return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
                         list_color_.empty() ? color_ : list_color_[k]};
       },
-      0, GLint(list_pos_.size()), false);
+      GLint(lit), GLint(list_pos_.size() - lit), false, lit);
+}
+
+// On a worker thread: reads only what early_handoff took and the lists' complete part.
+void Context::early_job() {
+  const EarlyDraw j = early_;  // a copy: the application's thread goes on writing early_.next
+  const auto fetch = [&j](GLint i) {
+    const size_t k = size_t(i);
+    return VertexIn{glm::dvec4(j.pos[k]), j.normal ? j.normal[k] : j.cur_normal, j.color ? j.color[k] : j.cur_color};
+  };
+  bool zero = false;
+  stage_list_part(fetch, 0, GLint(j.first), GLint(j.lit), false, 0, j.rs, &zero);
+  const uint64_t slivers = counters_.clipped_slivers.load(std::memory_order_relaxed);
+  raster::draw_triangle_list(fb_, j.rs, list_vertices_, j.corners + 3 * j.tri_first, j.drawn - j.tri_first, early_workers_,
+                             early_bins_, j.clear);
+  early_.zero_normal |= zero;
+  early_.sliver |= counters_.clipped_slivers.load(std::memory_order_relaxed) != slivers;
 }
 
 }  // namespace ffc::state

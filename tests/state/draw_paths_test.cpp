@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "backends/backend.h"
@@ -173,6 +174,86 @@ TEST(DrawPaths, NothingIsSharedWithAnEarlierGlBegin) {
   b.pos = pos, b.normal = normal, b.color = color;
   expect_same({a, b}, false);
   expect_same({a, b}, true);
+}
+
+// Immediate mode's early draws (Context::early_handoff): a long glBegin(GL_TRIANGLES) hands its
+// complete triangles to a worker every few corners. Whatever the interval, and whatever comes
+// between the corners (a glMaterial that leaves the triangle list mid-triangle, a colour growing
+// from 3 to 4 components, which wraps and rewrites the unfinished triangle's corners, the first
+// glColor under colour material), the picture, the depth buffer and the state after it are those
+// of the same calls drawn at glEnd.
+struct Breaks {
+  size_t material_at = SIZE_MAX;  // glMaterial(GL_DIFFUSE) before this corner
+  size_t color4_at = SIZE_MAX;    // corners before it send glColor3f, from it on glColor4f
+  size_t first_color_at = 0;      // no glColor before this corner
+};
+
+Picture draw_early(const std::vector<Soup>& soups, size_t early, bool color_material, const Breaks& br,
+                   std::vector<double>* after) {
+  auto soft = backends::make("soft");
+  soft->begin(kSize, kSize);
+  state::Context* c = state::Context::current();
+  c->set_early_corners(early);
+  set_up(color_material);
+  for (const Soup& s : soups) {
+    if (&s != &soups.front()) glRotatef(25, 0.3f, 1, 0);
+    glBegin(GL_TRIANGLES);
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (i == br.material_at) {
+        const float red[4] = {0.9f, 0.1f, 0.1f, 1};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, red);
+      }
+      if (i >= br.first_color_at) {
+        const float* k = &s.color[4 * i];
+        if (i < br.color4_at) glColor3f(k[0], k[1], k[2]);
+        else glColor4f(k[0], k[1], k[2], 0.5f);
+      }
+      glNormal3fv(&s.normal[3 * i]);
+      glVertex3fv(&s.pos[3 * i]);
+    }
+    glEnd();
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  after->assign(12, 0);
+  glGetDoublev(GL_CURRENT_COLOR, after->data());
+  glGetDoublev(GL_CURRENT_NORMAL, after->data() + 4);
+  GLfloat diffuse[4];
+  glGetMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+  for (int k = 0; k < 4; ++k) (*after)[8 + size_t(k)] = diffuse[k];
+  const raster::Framebuffer& fb = c->framebuffer();
+  return {fb.color, fb.depth};
+}
+
+void expect_early_same(const std::vector<Soup>& soups, bool color_material, const Breaks& br) {
+  std::vector<double> want_after, got_after;
+  const Picture want = draw_early(soups, 0, color_material, br, &want_after);
+  size_t drawn = 0;
+  for (size_t i = 0; i < want.color.size(); i += 4) drawn += want.color[i] != 0;
+  EXPECT_GT(drawn, want.color.size() / 4 / 4);
+  for (size_t early : {3, 4, 7, 100, 3072}) {
+    const Picture got = draw_early(soups, early, color_material, br, &got_after);
+    EXPECT_TRUE(got.color == want.color) << "every " << early << " corners";
+    EXPECT_TRUE(got.depth == want.depth) << "every " << early << " corners";
+    EXPECT_EQ(got_after, want_after) << "every " << early << " corners";
+  }
+}
+
+TEST(DrawPaths, EarlyDrawsGiveThePictureOfADrawAtGlEnd) {
+  const Soup g = grid(40, false, false), f = fan(500, false, false);
+  const auto breaks = [](size_t material_at, size_t color4_at, size_t first_color_at) {
+    Breaks b;
+    b.material_at = material_at, b.color4_at = color4_at, b.first_color_at = first_color_at;
+    return b;
+  };
+  constexpr size_t kNever = SIZE_MAX;
+  expect_early_same({g}, false, {});
+  expect_early_same({g, f}, false, {});                              // two glBegins
+  expect_early_same({g}, false, breaks(4001, kNever, 0));            // the general path from mid-triangle
+  expect_early_same({g}, false, breaks(3, kNever, 0));
+  expect_early_same({g}, false, breaks(kNever, 5000, 0));            // a wrap with alpha 1
+  expect_early_same({g}, true, breaks(kNever, 2002, 0));             // colour material, the wrap
+  expect_early_same({g}, true, breaks(kNever, kNever, 6000));        // colour material, no colour until late
+  expect_early_same({g, f}, true, breaks(7000, 3000, 0));
 }
 
 }  // namespace
