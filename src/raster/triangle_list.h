@@ -42,13 +42,16 @@ struct ListVertices {
     hot.resize(n), snapped.resize(n), clip.resize(n);
     back.resize(two_side ? n : 0), front_sec.resize(secondary ? n : 0), back_sec.resize(two_side && secondary ? n : 0);
   }
+  // Whether records [0, n) exist, with the colours the state reads.
+  bool holds(size_t n, bool two_side, bool secondary) const {
+    const size_t have = hot.size();
+    return have >= n && back.size() == (two_side ? have : 0) && front_sec.size() == (secondary ? have : 0) &&
+           back_sec.size() == (two_side && secondary ? have : 0);
+  }
   // At least n records (growing to `room`, n at least, where it must grow), without touching those
   // there are: growing value-initialises the new records.
   void grow(size_t n, size_t room, bool two_side, bool secondary) {
-    const size_t have = hot.size();
-    if (have < n || back.size() != (two_side ? have : 0) || front_sec.size() != (secondary ? have : 0) ||
-        back_sec.size() != (two_side && secondary ? have : 0))
-      resize(std::max(n, room), two_side, secondary);
+    if (!holds(n, two_side, secondary)) resize(std::max(n, room), two_side, secondary);
   }
 };
 

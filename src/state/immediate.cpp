@@ -335,7 +335,7 @@ void Context::leave_triangle_list() {
 void Context::End() {
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = store_corners_ = false;
-  early_join();
+  if (!immediate_list_) early_join();  // (none in flight: leave_triangle_list joined it) else immediate_to_list
   early_.next = SIZE_MAX;
   const size_t sent = immediate_list_ ? list_corner_.size() : verts_.size();
   const bool stored = spec_ || lists_.depth > 0 || sink_draws() || sent > wrap_start_ || early_after_wrap_;

@@ -487,16 +487,28 @@ void Context::arrays_to_list(GLint first, GLint count) {
 
 // Immediate mode's kept vertices (process_vertex), as they were at each glVertex: what was not
 // kept is not read, and the current value stands in.
-// Those lit early (early_.lit) are in place already.
+// Those lit early (early_.lit) are in place already; the early job in flight is joined here.
 void Context::immediate_to_list() {
+  const auto fetch = [this](GLint i) {
+    const size_t k = size_t(i);
+    return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
+                    list_color_.empty() ? color_ : list_color_[k]};
+  };
+  const size_t n = list_pos_.size();
+  if (early_.in_flight && !constants_dirty_ && n > early_.lit) {
+    // The rest lit on this thread while the job finishes: other records of list_vertices_, the
+    // same constants (unchanged since its handoff), so long as nothing must grow under it.
+    const raster::State rs = raster_state();
+    if (list_vertices_.holds(n, rs.two_side, rs.add_secondary)) {
+      bool zero = false;
+      stage_list_part(fetch, 0, GLint(early_.lit), GLint(n), false, 0, rs, &zero);
+      if (zero) deviations_.insert(kZeroNormal);
+      early_.lit = n;
+    }
+  }
+  early_join();
   const size_t lit = early_.lit;
-  stage_to_list(
-      [this](GLint i) {
-        const size_t k = size_t(i);
-        return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
-                        list_color_.empty() ? color_ : list_color_[k]};
-      },
-      GLint(lit), GLint(list_pos_.size() - lit), false, lit);
+  stage_to_list(fetch, GLint(lit), GLint(n - lit), false, lit);
 }
 
 // On a worker thread: reads only what early_handoff took and the lists' complete part.
