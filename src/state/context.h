@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <glm/glm.hpp>
 #include <map>
 #include <memory>
@@ -144,7 +145,7 @@ class Context {
   // wraps Mesa's vbo (position_size), which the full call does.
   bool store_vertex(float x, float y, float z, float w, int size) {
     if (!store_corners_ || lists_.mode != 0 || !format_has_position_ || size > position_size_) return false;
-    keep_list_vertex(x, y, z, w);
+    if (!kept_repeat(x, y, z, w)) keep_list_vertex(x, y, z, w);
     return true;
   }
 
@@ -586,6 +587,38 @@ class Context {
   std::array<CornerSlot, size_t(1) << kCornerSlotBits> corner_slots_{};
   uint32_t corner_generation_ = 0;
   void keep_list_vertex(float x, float y, float z, float w);
+  // The hash keep_list_vertex files a corner under: positions as float bits, the normal's doubles.
+  static uint64_t corner_hash(const uint64_t (&p)[2], const uint64_t (&n)[3]) {
+    // Independent products summed (a chain of multiplies would wait on each other): the top bits
+    // depend on every bit. The normal is hashed even where it is not compared: only the slot
+    // chosen depends on it.
+    return p[0] * 0x9E3779B97F4A7C15ull + p[1] * 0xC2B2AE3D27D4EB4Full + (n[0] ^ n[1] ^ n[2]) * 0x165667B19E3779F9ull;
+  }
+  static uint64_t float_bits(float lo, float hi) {  // from registers: the floats never pass through memory
+    uint32_t a, b;
+    std::memcpy(&a, &lo, sizeof a);
+    std::memcpy(&b, &hi, sizeof b);
+    return a | uint64_t(b) << 32;
+  }
+  static uint64_t double_bits(double d) {
+    uint64_t u;
+    std::memcpy(&u, &d, sizeof u);
+    return u;
+  }
+  // keep_list_vertex's commonest case inline in glVertex: lit without colour material, a repeat
+  // of the corner its slot holds, and room in list_corner_ (the early job may be reading it). False:
+  // nothing done, keep_list_vertex decides.
+  bool kept_repeat(float x, float y, float z, float w) {
+    if (!lighting_ || color_material_) return false;
+    const uint64_t p[2] = {float_bits(x, y), float_bits(z, w)};
+    const uint64_t n[3] = {double_bits(normal_.x), double_bits(normal_.y), double_bits(normal_.z)};
+    const CornerSlot& s = corner_slots_[corner_hash(p, n) >> (64 - kCornerSlotBits)];
+    const bool same = (s.generation == corner_generation_) & (s.pos[0] == p[0]) & (s.pos[1] == p[1]) &
+                      (s.normal[0] == n[0]) & (s.normal[1] == n[1]) & (s.normal[2] == n[2]);
+    if (!same || list_corner_.size() == list_corner_.capacity()) return false;
+    list_corner_.push_back(s.entry);
+    return true;
+  }
   // Early draws: inside a long glBegin(GL_TRIANGLES) on the triangle list the complete triangles
   // are lit and drawn on a worker thread (pool::Workers::post) while the application sends the next corners; glEnd lights
   // and draws the rest on the workers, after them, so every pixel sees the triangles in order.

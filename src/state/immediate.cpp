@@ -197,19 +197,6 @@ void Context::Begin(GLenum mode) {
   }
 }
 
-namespace {
-uint64_t bits(double d) {
-  uint64_t u;
-  std::memcpy(&u, &d, sizeof u);
-  return u;
-}
-uint64_t bits(float lo, float hi) {  // from registers: the floats never pass through memory
-  uint32_t a, b;
-  std::memcpy(&a, &lo, sizeof a);
-  std::memcpy(&b, &hi, sizeof b);
-  return a | uint64_t(b) << 32;
-}
-}  // namespace
 
 // Immediate mode's GL_TRIANGLES: the vertex kept for the list, only what the lighting reads (the
 // position rounded to float, as the float path rounds it anyway). A vertex equal to one a slot
@@ -217,13 +204,9 @@ uint64_t bits(float lo, float hi) {  // from registers: the floats never pass th
 // lighting but glMaterial, which leaves the list) shares that entry's lit colours.
 void Context::keep_list_vertex(float x, float y, float z, float w) {
   const bool normal = lighting_, color = !lighting_ || color_material_;
-  const uint64_t p[2] = {bits(x, y), bits(z, w)};
-  const uint64_t n[3] = {bits(normal_.x), bits(normal_.y), bits(normal_.z)};
-  // Independent products summed (a chain of multiplies would wait on each other): the top bits
-  // depend on every bit. The normal is hashed even where it is not compared: only the slot
-  // chosen depends on it.
-  const uint64_t h = p[0] * 0x9E3779B97F4A7C15ull + p[1] * 0xC2B2AE3D27D4EB4Full + (n[0] ^ n[1] ^ n[2]) * 0x165667B19E3779F9ull;
-  CornerSlot& s = corner_slots_[h >> (64 - kCornerSlotBits)];
+  const uint64_t p[2] = {float_bits(x, y), float_bits(z, w)};
+  const uint64_t n[3] = {double_bits(normal_.x), double_bits(normal_.y), double_bits(normal_.z)};
+  CornerSlot& s = corner_slots_[corner_hash(p, n) >> (64 - kCornerSlotBits)];
   // One branch: the comparisons are cheap next to a mispredicted one.
   bool same = (s.generation == corner_generation_) & (s.pos[0] == p[0]) & (s.pos[1] == p[1]);
   if (normal) same &= (s.normal[0] == n[0]) & (s.normal[1] == n[1]) & (s.normal[2] == n[2]);
