@@ -190,7 +190,10 @@ void Context::Begin(GLenum mode) {
   list_pos_.clear(), list_normal_.clear(), list_color_.clear(), list_corner_.clear();
   early_.lit = early_.drawn = 0;
   early_after_wrap_ = false;
-  early_.next = store_corners_ && early_corners_ > 0 && threads_ > 1 && lists_.depth == 0 ? early_corners_ : SIZE_MAX;
+  // Not while a list compiles: in GL_COMPILE_AND_EXECUTE the calls inside glBegin/glEnd that are
+  // errors elsewhere are taken (outside_begin_end_keeping_vertices), and could move what a job reads.
+  early_.next = store_corners_ && early_corners_ > 0 && threads_ > 1 && lists_.depth == 0 && lists_.mode == 0
+                    ? early_corners_ : SIZE_MAX;
   if (immediate_list_ && ++corner_generation_ == 0) {  // wrapped: no slot may look current
     std::fill(corner_slots_.begin(), corner_slots_.end(), CornerSlot{});
     corner_generation_ = 1;
