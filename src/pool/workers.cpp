@@ -47,6 +47,7 @@ void Workers::run_impl(void* fn, void (*call)(void*, int), int shares) {
 }
 
 void Workers::post(void (*fn)(void*), void* arg) {
+  if (threads_.empty()) return fn(arg);  // no thread to run it beside the caller: now
   posted_fn_ = fn, posted_arg_ = arg;
   start(this, [](void* w, int) {
     auto* self = static_cast<Workers*>(w);

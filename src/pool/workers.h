@@ -29,9 +29,10 @@ class Workers {
   void run(F&& fn, int shares = 0) {
     run_impl(&fn, [](void* f, int share) { (*static_cast<std::remove_reference_t<F>*>(f))(share); }, shares > 0 ? shares : size());
   }
-  // Starts fn(arg) on one of the started threads and returns at once (at least two threads): the
-  // caller goes on with other work, and neither run nor post may come before wait_posted. Immediate
-  // mode's early draws (state/immediate.cpp). The caller keeps arg alive until wait_posted returns.
+  // Starts fn(arg) on one of the started threads and returns at once (with no thread started, runs
+  // it first): the caller goes on with other work, and neither run nor post may come before
+  // wait_posted. Immediate mode's early draws (state/immediate.cpp). The caller keeps arg alive
+  // until wait_posted returns.
   void post(void (*fn)(void*), void* arg);
   bool posted_done() const { return done_.load(std::memory_order_acquire) == shares_; }
   void wait_posted();  // what fn wrote is visible after it

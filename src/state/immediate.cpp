@@ -200,7 +200,6 @@ void Context::Begin(GLenum mode) {
   }
 }
 
-
 // Immediate mode's GL_TRIANGLES: the vertex kept for the list, only what the lighting reads (the
 // position rounded to float, as the float path rounds it anyway). A vertex equal to one a slot
 // holds (bit for bit, under the same state: nothing between glBegin and glEnd changes the
