@@ -59,18 +59,20 @@ HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
   const hn::Half<DF> dh;
   const hn::Rebind<double, decltype(dh)> dd;
   const hn::RebindToUnsigned<decltype(dd)> du64;
-  auto half = [&](auto x, auto y, auto z, auto& odd) {
-    const auto s = hn::Add(hn::Mul(hn::PromoteTo(dd, x), hn::PromoteTo(dd, y)), hn::PromoteTo(dd, z));
-    // halfway: the 29 bits below float's last significand bit are 1000...0
+  // The lanes whose double rounds to float differently from the exact value: halfway (the 29
+  // bits below float's last significand bit are 1000...0), or in float's subnormal range.
+  auto exact = [&](auto x, auto y, auto z) {
+    return hn::Add(hn::Mul(hn::PromoteTo(dd, x), hn::PromoteTo(dd, y)), hn::PromoteTo(dd, z));
+  };
+  auto odd = [&](auto s) {
     const auto tail = hn::And(hn::BitCast(du64, s), hn::Set(du64, (uint64_t(1) << 29) - 1));
     const auto small = hn::And(hn::Lt(hn::Abs(s), hn::Set(dd, 0x1p-125)), hn::Ne(s, hn::Zero(dd)));
-    odd = odd || !hn::AllFalse(dd, hn::Or(hn::RebindMask(dd, hn::Eq(tail, hn::Set(du64, uint64_t(1) << 28))), small));
-    return hn::DemoteTo(dh, s);
+    return hn::Or(hn::RebindMask(dd, hn::Eq(tail, hn::Set(du64, uint64_t(1) << 28))), small);
   };
-  bool odd = false;
-  const auto lo = half(hn::LowerHalf(dh, a), hn::LowerHalf(dh, b), hn::LowerHalf(dh, c), odd);
-  const auto hi = half(hn::UpperHalf(dh, a), hn::UpperHalf(dh, b), hn::UpperHalf(dh, c), odd);
-  if (HWY_LIKELY(!odd)) return hn::Combine(df, hi, lo);
+  const auto lo = exact(hn::LowerHalf(dh, a), hn::LowerHalf(dh, b), hn::LowerHalf(dh, c));
+  const auto hi = exact(hn::UpperHalf(dh, a), hn::UpperHalf(dh, b), hn::UpperHalf(dh, c));
+  // One test for both halves: nearly always none is odd.
+  if (HWY_LIKELY(hn::AllFalse(dd, hn::Or(odd(lo), odd(hi))))) return hn::Combine(df, hn::DemoteTo(dh, hi), hn::DemoteTo(dh, lo));
   return FusedMulAddLanes(df, a, b, c);
 }
 #else
@@ -216,6 +218,7 @@ HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, V fy, V y_down, hn
   const auto inv = hn::Div(hn::Set(df, 1.0f), hn::Add(a.iw, hn::Mul(p.iw2, fy)));
   auto rgba = hn::Zero(du);
   auto finite = hn::RebindMask(df, pass);
+#pragma GCC unroll 4
   for (int k = 0; k < 4; ++k) {
     const auto v = hn::Mul(hn::Add(a.c[k], hn::Mul(p.cy[k], fy)), inv);
     finite = hn::And(finite, hn::IsFinite(v));
