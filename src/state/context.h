@@ -246,6 +246,8 @@ class Context {
   void loop_first_vertex();  // run from the held-back calls: a line loop's first vertex's values
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
   void drop_trailing(int kind);  // run from a list after its glEnd: those values back
+  void list_vertex_compiled(DisplayList& l, int own, bool last);  // a vertex compiles in a primitive of the list: it carries the trailing values
+  void carry_trailing(int kind);  // run from a list before such a vertex: the trailing values again
   ListState& list_state() { return lists_; }
   void compile_error(DisplayList& l, GLenum e);  // a compiled draw's error (display_list.cpp)
   void record_list_error(GLenum e);  // a compile error: recorded, and raised now in GL_COMPILE_AND_EXECUTE

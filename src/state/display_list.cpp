@@ -82,6 +82,9 @@ void list_snapshot_last_vertex() {
 void list_drop_trailing(int kind) {
   if (Context* c = Context::current()) c->drop_trailing(kind);
 }
+void list_carry_trailing(int kind) {
+  if (Context* c = Context::current()) c->carry_trailing(kind);
+}
 void list_loopback_attributes(int kinds, int kind, bool first_format) {
   if (Context* c = Context::current()) c->list_loopback(kinds, kind, first_format);
 }
@@ -130,8 +133,26 @@ void Context::snapshot_last_vertex() {
 }
 
 void Context::drop_trailing(int kind) {
-  if (kind & 1) normal_ = lists_.last_vertex_normal;
-  if (kind & 2) color_ = lists_.last_vertex_color;
+  if (kind & 1) lists_.carried_normal = normal_, normal_ = lists_.last_vertex_normal;
+  if (kind & 2) lists_.carried_color = color_, color_ = lists_.last_vertex_color;
+}
+
+// Measured by the seed-8086 helper (repro list_trailing_carried.txt, seed 8086 stream 212): the
+// trailing values stay in Mesa's vertex template (vbo_save's attrptr) after the glEnd, so the next
+// vertex the list stores before a flush carries them, in the next primitive, through a wrap, in
+// either list mode, from glVertex or glArrayElement or a compiled draw, unless its primitive sent
+// its own (glNormal before that vertex, a normal array); when the list runs, that vertex and so the
+// current values after it take them. A flush (a state call) empties the format: no carry past it.
+// `own`: the attributes the vertex brings itself; `last`: the last list the vertex is recorded into
+// (the held-back calls after the list in GL_COMPILE_AND_EXECUTE).
+void Context::list_vertex_compiled(DisplayList& l, int own, bool last) {
+  if (const int carry = lists_.carry & ~own) l.record<list_carry_trailing>(carry);
+  if (last) lists_.carry = 0;
+}
+
+void Context::carry_trailing(int kind) {
+  if (kind & 1) normal_ = lists_.carried_normal;
+  if (kind & 2) color_ = lists_.carried_color;
 }
 
 // Mesa replays a list's vertex lists through immediate mode (UseLoopback) once its compiler met a
@@ -320,7 +341,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.compiling.clear();
   lists_.held_back.clear();
   lists_.open = false, lists_.vertices = lists_.stored = 0, lists_.attributes = 0, lists_.had_vertex = false,
-  lists_.trailing = 0, lists_.color_size = lists_.position_size = 0;
+  lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
@@ -562,6 +583,7 @@ void Context::note_node_primitive(bool open) {
 }
 
 void Context::end_list_node() {
+  lists_.carry = 0;  // the flush empties the store's format (list_vertex_compiled)
   if (lists_.open) note_node_primitive(true);
   lists_.node_last_mode = 0;
   if (lists_.node_open)
@@ -722,6 +744,10 @@ void Context::compile_element(DisplayList& l, GLint i) {
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
     if (format) hold_back(-1, int(vertex_array_.size)), store_vertex(-1, v);
+    if (lists_.open || lists_.compiling_draw)
+      list_vertex_compiled(l, (normal_array_.enabled && normal_array_.pointer ? 1 : 0) |
+                                  (color_array_.enabled && color_array_.pointer ? 2 : 0),
+                           forms_format(l));
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
     if (inside) lists_.had_vertex = true, lists_.trailing = 0;
     // A glArrayElement in the list's glBegin: a line loop's first vertex keeps its values (counted in

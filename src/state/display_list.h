@@ -227,6 +227,11 @@ struct ListState {
   int trailing = 0;  // bits: normal 1, colour 2
   glm::dvec3 last_vertex_normal{0, 0, 1};
   glm::dvec4 last_vertex_color{1, 1, 1, 1};
+  // Mesa's vertex template keeps those trailing values: compiling, the attributes a later vertex of the
+  // list before the next flush carries (Context::list_vertex_compiled); running, their values.
+  int carry = 0;  // bits: normal 1, colour 2
+  glm::dvec3 carried_normal{0, 0, 1};
+  glm::dvec4 carried_color{1, 1, 1, 1};
   // GL_COMPILE_AND_EXECUTE: a wrap drew the list's primitive so far, but glGet reads the current
   // values from before it until the rest is flushed (display_list.cpp, Context::hold_back).
   bool shown = false;

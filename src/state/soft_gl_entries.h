@@ -82,9 +82,13 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &Begin>())
       ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
       ls.trailing = 0, ls.wrapped = false, ++ls.prims, ls.wrap_copies = 0, ls.closing_loop = ls.loop_restarted = false;
-    if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
-    if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
-    if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
+    if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1), ls.carry &= ~1;
+    if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2), ls.carry &= ~2;
+    if constexpr (same_entry<Fn, &VertexValues>()) {
+      // A vertex after an earlier primitive's trailing values carries them (Context::list_vertex_compiled).
+      if (ls.open) c->list_vertex_compiled(*l, 0, !c->list_executes());
+      ls.had_vertex = true, ls.trailing = 0;
+    }
     if constexpr (same_entry<Fn, &End>()) {
       // A glEnd without its glBegin in the list: Mesa records it, and in GL_COMPILE_AND_EXECUTE
       // executes it now as a state call (measured: GL_INVALID_OPERATION after a refused glBegin).
@@ -96,6 +100,7 @@ bool compiled_only(const A&... a) {
         return false;
       }
       c->note_node_primitive(false);
+      if (ls.had_vertex) ls.carry |= ls.trailing;  // left in Mesa's vertex template (Context::list_vertex_compiled)
       ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
       l->note_primitive(ls.open_mode, ls.primitive_vertices);
     }
@@ -122,6 +127,8 @@ bool compiled_only(const A&... a) {
       const auto v = std::tie(a...);
       c->store_vertex(kind, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
     }
+    if constexpr (same_entry<Fn, &VertexValues>())
+      if (ls.open && c->list_executes()) c->list_vertex_compiled(c->list_held_back(), 0, true);
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     if constexpr (same_entry<Fn, &VertexValues>()) {
       c->note_loop_first_vertex(*l);
