@@ -260,6 +260,7 @@ class Context {
   void start_list_node(bool draw);  // a primitive begins in the list's vertex store (a compiled draw or not)
   void end_list_node();             // the store is compiled into a vertex list (a flush)
   void split_list_node(int joining = 0);           // ... and its open primitive goes on in the next (a wrap)
+  void note_vertexless_node();  // a vertex list ends: one with attributes and no vertex (kListVertexlessNode)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies

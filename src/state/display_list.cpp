@@ -276,12 +276,12 @@ void Context::hold_back(int kind, int size) {
     split_list_node(kind > 0 ? kind & 3 : 0);  // the vertex list before the wrap is compiled first, then marked
     if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
     if (list_executes()) run_held_back(false);
-    lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies;
+    lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies, lists_.node_vertices = copies;
   }
   if (kind < 0) {
     if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
     lists_.position_size = std::max(lists_.position_size, size);
-    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices;
+    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices, ++lists_.node_vertices;
     return;
   }
   if (kind == 2) lists_.color_size = std::max(lists_.color_size, size);
@@ -404,6 +404,7 @@ void Context::call_one_list(GLuint list) {
   // second finding: a self-intersecting quad in a list splits otherwise than drawn at once (open).
   if (it->second.padded_quad && render_mode_ == GL_RENDER) deviations_.insert(kListPaddedQuadDrawn);
   if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
+  if (it->second.vertexless && !it->second.loopback) deviations_.insert(kListVertexlessNode);
   const bool outer = lists_.replaying_loopback;
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
@@ -582,10 +583,26 @@ void Context::note_node_primitive(bool open) {
   if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count;
 }
 
+// Measured by the seed-8086 helper (repro list_vertexless_wrap_current.txt, seed 2026 stream 972):
+// a vertex list whose format holds an attribute besides the position and which has no vertex (a
+// glNormal or glColor first sent after the last vertex of a GL_POINTS wraps the store with nothing
+// to copy, and nothing follows before the flush; a primitive with attributes and no vertex) makes
+// Mesa's compile_vertex_list take its current_data from the store's first slot (vertex_count - 1
+// taken as 0), which that vertex list never wrote: glCallList then sets the current values from it
+// (a stale vertex of an earlier list, zeros in fresh memory). Named (row 55); a compiled draw's
+// vertex list copies nothing (no_current_update), and a list replayed through immediate mode replays
+// no vertex.
+void Context::note_vertexless_node() {
+  if (lists_.node_open && !lists_.node_draw && lists_.node_vertices == 0 && (lists_.attributes & 7))
+    lists_.compiling.vertexless = true;
+  lists_.node_vertices = 0;
+}
+
 void Context::end_list_node() {
   lists_.carry = 0;  // the flush empties the store's format (list_vertex_compiled)
   if (lists_.open) note_node_primitive(true);
   lists_.node_last_mode = 0;
+  note_vertexless_node();
   if (lists_.node_open)
     lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
                                                               : lists_.vertices == 0 || lists_.loop_restarted ? 8  // row 68
@@ -637,6 +654,7 @@ void Context::split_list_node(int joining) {
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
   const int copy = lists_.node_draw || lists_.attributes == 0 ? 0 : lists_.open ? 2 : 1;
   if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining);
+  note_vertexless_node();
   close_store();
 }
 

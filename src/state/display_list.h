@@ -75,6 +75,13 @@ inline constexpr const char* kListEmptyLoopCurrent =
     "past the vertices it kept, and sets the current values (and a tracked material) from that memory; soft "
     "leaves them as they were";
 
+// Row 55 (docs/deviations.md): named, not modelled (Context::note_vertexless_node).
+inline constexpr const char* kListVertexlessNode =
+    "a display list's vertex list with an attribute in its format and no vertex (a primitive without a vertex, or "
+    "an attribute first sent after a primitive's last vertex that wraps the store with nothing to copy, no vertex "
+    "following before the flush): when the list is called, Mesa copies the current values from a slot of its "
+    "vertex store that vertex list never wrote; soft leaves them as the vertices sent left them";
+
 // The fewest vertices a primitive of this mode draws anything with.
 inline int fewest_vertices(GLenum mode) {
   switch (mode) {
@@ -109,7 +116,10 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false, calls.clear(); }
+  void clear() {
+    bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false;
+    vertexless = false, calls.clear();
+  }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   bool padded_quad = false;  // a GL_QUADS or GL_QUAD_STRIP of three vertices (kListPaddedQuadDrawn)
   // Notes a primitive of `mode` with `vertices` that compiled into the list.
@@ -121,6 +131,7 @@ class DisplayList {
   // Context::mark_loopback), where a compiled draw's values become current.
   bool loopback = false;
   bool deduplicated = false;  // a vertex list of it lost repeated vertices, compiled before any loopback mark
+  bool vertexless = false;  // a vertex list of it has attributes and no vertex (kListVertexlessNode)
   std::vector<GLuint> calls;  // the names its glCallList and glCallLists compiled (without the list base)
   bool empty() const { return bytes_.empty(); }
 
@@ -173,6 +184,7 @@ struct ListState {
   // sizes of the colour and the position, kept from one primitive to the next until a flush.
   int stored = 0;
   int prims = 0;  // primitives begun in the store since then (a wrap leaves the one it interrupted)
+  int node_vertices = 0;  // the vertices of the open vertex list, a wrap's copies included (kListVertexlessNode)
   bool refill_error = false;  // a draw filled the store: the next flush raises an error (compile_elements)
   int attributes = 0;      // bits: normal, colour, texture, edge
   // Vertices of the open primitive a wrap copied into the next vertex list (Mesa's copied.nr), and
