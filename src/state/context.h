@@ -240,6 +240,9 @@ class Context {
   void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
+  void show_current();  // the current values Mesa's executing side shows inside the list's glBegin (ListState::shown)
+  void list_fallback();  // a glCallList(s) compiles inside the list's glBegin (Mesa's dlist_fallback)
+  void fallen_back_run();  // ... and in GL_COMPILE_AND_EXECUTE, after the held-back calls ran: inside the glBegin
   void mark_loopback();  // the list compiling is replayed through immediate mode (DisplayList::loopback)
   void mark_called_loopback(const DisplayList& l);  // ... and so are the lists it calls, for good
   void note_loop_first_vertex(DisplayList& l);  // after a compiled vertex: a line loop's first keeps its values
@@ -392,7 +395,7 @@ class Context {
   void copy_pending();
   void flush_current();
   void flush_stored();
-  void flush_stored_keeping_format();
+  void flush_stored_keeping_format(bool begin = false);
   void flush_vertices();  // Mesa's FLUSH_VERTICES: a flush of stored vertices when one is asked for
   // Mesa's setters compare first and run FLUSH_VERTICES only when the call changes the state
   // (docs/fidelity.md): `changes` flushes when `differs`, `assign` sets a value that differs.
@@ -496,6 +499,12 @@ class Context {
   glm::dvec3 normal_{0, 0, 1};
   glm::dvec4 color_{1, 1, 1, 1};
   glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
+  // Mesa's ctx->Current normal and colour: normal_ and color_ are its vbo's values, copied there at
+  // FLUSH_CURRENT, at a flush of stored vertices and at a glBegin whose vbo format holds attributes
+  // and no position, never at glEnd (copy_pending, flush_stored_keeping_format). Read only where a
+  // GL_COMPILE_AND_EXECUTE list leaves Mesa inside a glBegin (display_list.cpp, Context::hold_back).
+  glm::dvec3 mesa_normal_{0, 0, 1};
+  glm::dvec4 mesa_color_{1, 1, 1, 1};
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal

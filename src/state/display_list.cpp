@@ -166,6 +166,32 @@ void Context::carry_trailing(int kind) {
 // the wrap the current colour stays as it was.
 void Context::mark_loopback() { lists_.compiling.loopback = true; }
 
+// The current values glGet reads while Mesa's executing side is inside the list's glBegin after a
+// wrap or a fallback (ListState::shown), taken before the held-back calls run (Context::hold_back).
+void Context::show_current() {
+  const bool copied = !format_has_position_;
+  lists_.shown_normal = copied ? normal_ : mesa_normal_;
+  lists_.shown_color = copied ? color_ : mesa_color_;
+}
+
+// Measured (repro list_call_inside_begin_executing.txt, seed 8086 stream 58 shrunk): a glCallList
+// compiled inside the list's own glBegin makes Mesa compile its store at once and mark the list for
+// loopback (vbo_save_api.c, dlist_fallback), and the rest of the primitive, its glEnd included,
+// compiles as calls that GL_COMPILE_AND_EXECUTE executes at once (dlist.c's save_Vertex, save_End).
+// The loopback of that store runs the list's glBegin on the executing side without its glEnd, so
+// Mesa is inside glBegin/glEnd from the glCallList to the list's glEnd: the glGetError after the
+// called list's error (glCallList(0): GL_INVALID_VALUE) returns GL_NO_ERROR, glIsEnabled is refused,
+// and glGet reads the current values as the last flush left them (show_current).
+void Context::list_fallback() {
+  mark_loopback();
+  lists_.fallback = true;
+  if (list_executes()) show_current();
+}
+
+void Context::fallen_back_run() {
+  if (lists_.open && lists_.fallback) lists_.shown = true;
+}
+
 void Context::mark_called_loopback(const DisplayList& l) {
   for (GLuint name : l.calls) {
     const auto it = lists_.lists.find(name);
@@ -266,7 +292,14 @@ void Context::hold_back(int kind, int size) {
     // Measured: glBegin, glColor4f(0, 0, 0, 0), glVertex2f, then a first glNormal (the wrap) reads
     // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
     // flushed the rest: the wrapped vertices are drawn without touching the current values.
-    if (list_executes() && !lists_.shown) lists_.shown = true, lists_.shown_normal = normal_, lists_.shown_color = color_;
+    // Mesa's executing side runs the held-back glBegin (its loopback), which copies what its vbo holds
+    // to the current values first only where the vbo's format holds no position (vbo_exec_Begin):
+    // after a glVertex outside glBegin (executed at once), or a primitive the last flush left in the
+    // vbo (a glMatrixMode or glShadeModel in GL_COMPILE_AND_EXECUTE flushes nothing after it), the
+    // current values are those the last flush copied (mesa_normal_), and stay so inside the glBegin:
+    // measured, seed 2026 stream 594, seed 8086 stream 58, seed 777 stream 3 (repro
+    // list_wrap_shows_last_flushed.txt).
+    if (list_executes() && !lists_.shown) show_current(), lists_.shown = true;
     // The part of the primitive the wrap cut off is a primitive of its own in the list: too short to
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
@@ -342,7 +375,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.held_back.clear();
   lists_.open = false, lists_.vertices = lists_.stored = 0, lists_.attributes = 0, lists_.had_vertex = false,
   lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
-  lists_.shown = false, lists_.refill_error = false;
+  lists_.shown = lists_.fallback = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
@@ -382,7 +415,10 @@ void Context::CallList(GLuint list) {
 }
 
 void Context::end_list_calls() {
-  // The colour reaches the state (and a tracked material) at soft's next flush, as Mesa's does.
+  // Mesa's vertex lists copied their values to the current ones (playback_copy_to_current); the
+  // pending ones are in its vbo's format. The colour reaches the state (and a tracked material) at
+  // soft's next flush, as Mesa's does.
+  mesa_normal_ = normal_, mesa_color_ = color_;
   if (lists_.pending & 1) normal_ = lists_.pending_normal;
   if (lists_.pending & 2) color_ = lists_.pending_color;
   lists_.calling = lists_.mesa_inside = false, lists_.pending = 0;
@@ -444,13 +480,14 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   if (n == 0 || !lists) return;
   // Compiled, the names are copied now and the list base read when the list runs.
   if (DisplayList* l = list_recording()) {
-    if (lists_.open) mark_loopback();  // as glCallList (soft_gl.cpp)
+    if (lists_.open) list_fallback();  // as glCallList (soft_gl.cpp)
     end_list_node();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
     for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
     lists_.outside_attributes = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
+    fallen_back_run();
   }
   const bool outermost = !lists_.calling;
   if (outermost) begin_list_calls();

@@ -247,6 +247,9 @@ struct ListState {
   // GL_COMPILE_AND_EXECUTE: a wrap drew the list's primitive so far, but glGet reads the current
   // values from before it until the rest is flushed (display_list.cpp, Context::hold_back).
   bool shown = false;
+  // A glCallList or glCallLists compiled inside the list's glBegin (Context::list_fallback): the rest of
+  // that primitive compiles as calls executed at once, outside Mesa's vertex store.
+  bool fallback = false;
   // Compiling, for the rest of a wrapped primitive (display_list.cpp, Context::list_loopback): whether
   // the open primitive wrapped, and the attributes in the format at its first vertex.
   bool wrapped = false;

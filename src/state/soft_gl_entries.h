@@ -79,8 +79,15 @@ bool compiled_only(const A&... a) {
     if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
   }
   if constexpr (K == ListKind::Vertex) {
+    // After a glCallList inside the list's glBegin the rest of the primitive compiles as calls that
+    // GL_COMPILE_AND_EXECUTE executes at once, outside the vertex store (Context::list_fallback).
+    if (ls.open && ls.fallback) {
+      if constexpr (same_entry<Fn, &End>()) ls.open = ls.fallback = ls.shown = false;
+      l->record<Fn>(a...);
+      return !c->list_executes();
+    }
     if constexpr (same_entry<Fn, &Begin>())
-      ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
+      ls.fallback = false, ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
       ls.trailing = 0, ls.wrapped = false, ++ls.prims, ls.wrap_copies = 0, ls.closing_loop = ls.loop_restarted = false;
     if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1), ls.carry &= ~1;
     if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2), ls.carry &= ~2;
