@@ -377,6 +377,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = lists_.fallback = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
+  lists_.shade_model = 0;
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
@@ -484,7 +485,7 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
     end_list_node();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
     for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
-    lists_.outside_attributes = 0;
+    lists_.outside_attributes = 0, lists_.shade_model = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
     fallen_back_run();

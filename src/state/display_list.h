@@ -192,6 +192,9 @@ struct ListState {
   // (Mesa's ListState.ActiveAttribSize): bits as `attributes`.
   int wrap_copies = 0;
   int outside_attributes = 0;
+  // The shade model the list last compiled (Mesa's ListState.Current.ShadeModel; 0 after glNewList
+  // and a compiled glCallList): an equal glShadeModel is neither compiled nor a flush (soft_gl_entries.h).
+  GLenum shade_model = 0;
   bool replaying_loopback = false;  // the list running is replayed through immediate mode (DisplayList::loopback)
   // GL_COMPILE_AND_EXECUTE: the store's last primitive is a GL_LINE_LOOP ended in it, and the values
   // of its first vertex as the held-back calls ran (display_list.cpp, Context::run_held_back).

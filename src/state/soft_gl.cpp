@@ -232,7 +232,7 @@ void APIENTRY CallList(GLuint l) {
     c->end_list_node();
     rec->record<CallListRecorded>(l);
     rec->calls.push_back(l);
-    c->list_state().outside_attributes = 0;
+    c->list_state().outside_attributes = 0, c->list_state().shade_model = 0;
     if (!c->list_executes()) return;
     c->run_held_back();
     c->fallen_back_run();  // inside the list's glBegin: Mesa's executing side is left inside it

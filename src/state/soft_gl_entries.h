@@ -57,6 +57,25 @@ bool compiled_only(const A&... a) {
     c->record_list_error(GL_INVALID_OPERATION);
     return true;
   }
+  if constexpr (same_entry<Fn, &ShadeModel>()) {
+    // Mesa's save_ShadeModel (dlist.c), unlike the other state calls, executes first in
+    // GL_COMPILE_AND_EXECUTE, before the list's store is flushed (so a primitive held back is drawn
+    // with the new model and its values stay pending on the executing side), and where the list's
+    // last compiled shade model is the same it is neither compiled nor a flush. Measured: repro
+    // list_shade_model_order.txt.
+    if (c->list_executes()) {
+      ++ls.depth;  // executes, recording nothing
+      Fn(a...);
+      --ls.depth;
+    }
+    const GLenum mode = GLenum(a...);
+    if (ls.shade_model == mode) return true;
+    ls.shade_model = mode;
+    c->end_list_node();
+    l->record<Fn>(a...);
+    if (c->list_executes()) c->run_held_back();
+    return true;
+  }
   // Outside the list's own glBegin/glEnd a vertex-stream call other than glBegin and glEnd compiles
   // as a state call does (Mesa swaps its vertex format out there: "compiled as opcodes"), so in
   // GL_COMPILE_AND_EXECUTE it flushes what was held back and executes at once (measured: glNormal3d
