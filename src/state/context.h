@@ -252,6 +252,7 @@ class Context {
   void list_vertex_compiled(DisplayList& l, int own, bool last);  // a vertex compiles in a primitive of the list: it carries the trailing values
   void carry_trailing(int kind);  // run from a list before such a vertex: the trailing values again
   ListState& list_state() { return lists_; }
+  bool inside_begin() const { return in_begin_; }  // GL_COMPILE_AND_EXECUTE: the executing side too (a wrap)
   // glCallList draws the list's vertex lists as indexed draws (not replayed through immediate mode).
   bool list_indexed() const { return lists_.calling && !lists_.replaying_loopback; }
   void compile_error(DisplayList& l, GLenum e);  // a compiled draw's error (display_list.cpp)

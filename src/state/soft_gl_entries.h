@@ -63,7 +63,9 @@ bool compiled_only(const A&... a) {
     // with the new model and its values stay pending on the executing side), and where the list's
     // last compiled shade model is the same it is neither compiled nor a flush. Measured: repro
     // list_shade_model_order.txt.
-    if (c->list_executes()) {
+    // Executed inside the list's wrapped glBegin, the executing side refuses it (measured).
+    if (c->list_executes() && c->inside_begin()) c->record_error(GL_INVALID_OPERATION);
+    else if (c->list_executes()) {
       ++ls.depth;  // executes, recording nothing
       Fn(a...);
       --ls.depth;
