@@ -249,13 +249,21 @@ class Context {
   void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive
   void list_primitive_end(DisplayList& l, int trailing);  // its glEnd was compiled: the trailing values dropped
+  void show_current();  // the current values Mesa's executing side shows inside the list's glBegin (ListState::shown)
+  void list_fallback();  // a glCallList(s) compiles inside the list's glBegin (Mesa's dlist_fallback)
+  void fallen_back_run();  // ... and in GL_COMPILE_AND_EXECUTE, after the held-back calls ran: inside the glBegin
   void mark_loopback();  // the list compiling is replayed through immediate mode (DisplayList::loopback)
   void mark_called_loopback(const DisplayList& l);  // ... and so are the lists it calls, for good
   void note_loop_first_vertex(DisplayList& l);  // after a compiled vertex: a line loop's first keeps its values
   void loop_first_vertex();  // run from the held-back calls: a line loop's first vertex's values
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
   void drop_trailing(int kind);  // run from a list after its glEnd: those values back
+  void list_vertex_compiled(DisplayList& l, int own, bool last);  // a vertex compiles in a primitive of the list: it carries the trailing values
+  void carry_trailing(int kind);  // run from a list before such a vertex: the trailing values again
   ListState& list_state() { return lists_; }
+  bool inside_begin() const { return in_begin_; }  // GL_COMPILE_AND_EXECUTE: the executing side too (a wrap)
+  // glCallList draws the list's vertex lists as indexed draws (not replayed through immediate mode).
+  bool list_indexed() const { return lists_.calling && !lists_.replaying_loopback; }
   void compile_error(DisplayList& l, GLenum e);  // a compiled draw's error (display_list.cpp)
   void record_list_error(GLenum e);  // a compile error: recorded, and raised now in GL_COMPILE_AND_EXECUTE
   // Vertex-array draws while compiling, dereferenced (indices null: first .. first + count - 1).
@@ -267,6 +275,7 @@ class Context {
   void start_list_node(bool draw);  // a primitive begins in the list's vertex store (a compiled draw or not)
   void end_list_node();             // the store is compiled into a vertex list (a flush)
   void split_list_node(int joining = 0);           // ... and its open primitive goes on in the next (a wrap)
+  void note_vertexless_node();  // a vertex list ends: one with attributes and no vertex (kListVertexlessNode)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies
@@ -404,7 +413,7 @@ class Context {
   void copy_pending();
   void flush_current();
   void flush_stored();
-  void flush_stored_keeping_format();
+  void flush_stored_keeping_format(bool begin = false);
   void flush_vertices();  // Mesa's FLUSH_VERTICES: a flush of stored vertices when one is asked for
   // Mesa's setters compare first and run FLUSH_VERTICES only when the call changes the state
   // (docs/fidelity.md): `changes` flushes when `differs`, `assign` sets a value that differs.
@@ -508,6 +517,12 @@ class Context {
   glm::dvec3 normal_{0, 0, 1};
   glm::dvec4 color_{1, 1, 1, 1};
   glm::dvec4 flushed_color_{1, 1, 1, 1};  // the colour as last copied to the state (Mesa's ctx->Current)
+  // Mesa's ctx->Current normal and colour: normal_ and color_ are its vbo's values, copied there at
+  // FLUSH_CURRENT, at a flush of stored vertices and at a glBegin whose vbo format holds attributes
+  // and no position, never at glEnd (copy_pending, flush_stored_keeping_format). Read only where a
+  // GL_COMPILE_AND_EXECUTE list leaves Mesa inside a glBegin (display_list.cpp, Context::hold_back).
+  glm::dvec3 mesa_normal_{0, 0, 1};
+  glm::dvec4 mesa_color_{1, 1, 1, 1};
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal

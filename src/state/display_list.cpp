@@ -82,6 +82,9 @@ void list_snapshot_last_vertex() {
 void list_drop_trailing(int kind) {
   if (Context* c = Context::current()) c->drop_trailing(kind);
 }
+void list_carry_trailing(int kind) {
+  if (Context* c = Context::current()) c->carry_trailing(kind);
+}
 void list_loopback_attributes(int kinds, int kind, bool first_format) {
   if (Context* c = Context::current()) c->list_loopback(kinds, kind, first_format);
 }
@@ -130,8 +133,26 @@ void Context::snapshot_last_vertex() {
 }
 
 void Context::drop_trailing(int kind) {
-  if (kind & 1) normal_ = lists_.last_vertex_normal;
-  if (kind & 2) color_ = lists_.last_vertex_color;
+  if (kind & 1) lists_.carried_normal = normal_, normal_ = lists_.last_vertex_normal;
+  if (kind & 2) lists_.carried_color = color_, color_ = lists_.last_vertex_color;
+}
+
+// Measured by the seed-8086 helper (repro list_trailing_carried.txt, seed 8086 stream 212): the
+// trailing values stay in Mesa's vertex template (vbo_save's attrptr) after the glEnd, so the next
+// vertex the list stores before a flush carries them, in the next primitive, through a wrap, in
+// either list mode, from glVertex or glArrayElement or a compiled draw, unless its primitive sent
+// its own (glNormal before that vertex, a normal array); when the list runs, that vertex and so the
+// current values after it take them. A flush (a state call) empties the format: no carry past it.
+// `own`: the attributes the vertex brings itself; `last`: the last list the vertex is recorded into
+// (the held-back calls after the list in GL_COMPILE_AND_EXECUTE).
+void Context::list_vertex_compiled(DisplayList& l, int own, bool last) {
+  if (const int carry = lists_.carry & ~own) l.record<list_carry_trailing>(carry);
+  if (last) lists_.carry = 0;
+}
+
+void Context::carry_trailing(int kind) {
+  if (kind & 1) normal_ = lists_.carried_normal;
+  if (kind & 2) color_ = lists_.carried_color;
 }
 
 // Mesa replays a list's vertex lists through immediate mode (UseLoopback) once its compiler met a
@@ -144,6 +165,32 @@ void Context::drop_trailing(int kind) {
 // tracked by colour material after glCallList (repro list_loopback_draw_current.txt), where without
 // the wrap the current colour stays as it was.
 void Context::mark_loopback() { lists_.compiling.loopback = true; }
+
+// The current values glGet reads while Mesa's executing side is inside the list's glBegin after a
+// wrap or a fallback (ListState::shown), taken before the held-back calls run (Context::hold_back).
+void Context::show_current() {
+  const bool copied = !format_has_position_;
+  lists_.shown_normal = copied ? normal_ : mesa_normal_;
+  lists_.shown_color = copied ? color_ : mesa_color_;
+}
+
+// Measured (repro list_call_inside_begin_executing.txt, seed 8086 stream 58 shrunk): a glCallList
+// compiled inside the list's own glBegin makes Mesa compile its store at once and mark the list for
+// loopback (vbo_save_api.c, dlist_fallback), and the rest of the primitive, its glEnd included,
+// compiles as calls that GL_COMPILE_AND_EXECUTE executes at once (dlist.c's save_Vertex, save_End).
+// The loopback of that store runs the list's glBegin on the executing side without its glEnd, so
+// Mesa is inside glBegin/glEnd from the glCallList to the list's glEnd: the glGetError after the
+// called list's error (glCallList(0): GL_INVALID_VALUE) returns GL_NO_ERROR, glIsEnabled is refused,
+// and glGet reads the current values as the last flush left them (show_current).
+void Context::list_fallback() {
+  mark_loopback();
+  lists_.fallback = true;
+  if (list_executes()) show_current();
+}
+
+void Context::fallen_back_run() {
+  if (lists_.open && lists_.fallback) lists_.shown = true;
+}
 
 void Context::mark_called_loopback(const DisplayList& l) {
   for (GLuint name : l.calls) {
@@ -245,7 +292,14 @@ void Context::hold_back(int kind, int size) {
     // Measured: glBegin, glColor4f(0, 0, 0, 0), glVertex2f, then a first glNormal (the wrap) reads
     // GL_CURRENT_COLOR (1, 1, 1, 1) on Mesa, also after the list's glEnd, and 0 only once glEndList
     // flushed the rest: the wrapped vertices are drawn without touching the current values.
-    if (list_executes() && !lists_.shown) lists_.shown = true, lists_.shown_normal = normal_, lists_.shown_color = color_;
+    // Mesa's executing side runs the held-back glBegin (its loopback), which copies what its vbo holds
+    // to the current values first only where the vbo's format holds no position (vbo_exec_Begin):
+    // after a glVertex outside glBegin (executed at once), or a primitive the last flush left in the
+    // vbo (a glMatrixMode or glShadeModel in GL_COMPILE_AND_EXECUTE flushes nothing after it), the
+    // current values are those the last flush copied (mesa_normal_), and stay so inside the glBegin:
+    // measured, seed 2026 stream 594, seed 8086 stream 58, seed 777 stream 3 (repro
+    // list_wrap_shows_last_flushed.txt).
+    if (list_executes() && !lists_.shown) show_current(), lists_.shown = true;
     // The part of the primitive the wrap cut off is a primitive of its own in the list: too short to
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
@@ -255,12 +309,12 @@ void Context::hold_back(int kind, int size) {
     split_list_node(kind > 0 ? kind & 3 : 0);  // the vertex list before the wrap is compiled first, then marked
     if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
     if (list_executes()) run_held_back(false);
-    lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies;
+    lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies, lists_.node_vertices = copies;
   }
   if (kind < 0) {
     if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
     lists_.position_size = std::max(lists_.position_size, size);
-    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices;
+    if (lists_.open) ++lists_.vertices, ++lists_.stored, ++lists_.primitive_vertices, ++lists_.node_vertices;
     return;
   }
   if (kind == 2) lists_.color_size = std::max(lists_.color_size, size);
@@ -320,9 +374,10 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.compiling.clear();
   lists_.held_back.clear();
   lists_.open = false, lists_.vertices = lists_.stored = 0, lists_.attributes = 0, lists_.had_vertex = false,
-  lists_.trailing = 0, lists_.color_size = lists_.position_size = 0;
-  lists_.shown = false, lists_.refill_error = false;
+  lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
+  lists_.shown = lists_.fallback = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
+  lists_.shade_model = 0;
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
@@ -361,7 +416,10 @@ void Context::CallList(GLuint list) {
 }
 
 void Context::end_list_calls() {
-  // The colour reaches the state (and a tracked material) at soft's next flush, as Mesa's does.
+  // Mesa's vertex lists copied their values to the current ones (playback_copy_to_current); the
+  // pending ones are in its vbo's format. The colour reaches the state (and a tracked material) at
+  // soft's next flush, as Mesa's does.
+  mesa_normal_ = normal_, mesa_color_ = color_;
   if (lists_.pending & 1) normal_ = lists_.pending_normal;
   if (lists_.pending & 2) color_ = lists_.pending_color;
   lists_.calling = lists_.mesa_inside = false, lists_.pending = 0;
@@ -383,6 +441,7 @@ void Context::call_one_list(GLuint list) {
   // second finding: a self-intersecting quad in a list splits otherwise than drawn at once (open).
   if (it->second.padded_quad && render_mode_ == GL_RENDER) deviations_.insert(kListPaddedQuadDrawn);
   if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
+  if (it->second.vertexless && !it->second.loopback) deviations_.insert(kListVertexlessNode);
   const bool outer = lists_.replaying_loopback;
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
@@ -422,13 +481,14 @@ void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
   if (n == 0 || !lists) return;
   // Compiled, the names are copied now and the list base read when the list runs.
   if (DisplayList* l = list_recording()) {
-    if (lists_.open) mark_loopback();  // as glCallList (soft_gl.cpp)
+    if (lists_.open) list_fallback();  // as glCallList (soft_gl.cpp)
     end_list_node();
     for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
     for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
-    lists_.outside_attributes = 0;
+    lists_.outside_attributes = 0, lists_.shade_model = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
+    fallen_back_run();
   }
   const bool outermost = !lists_.calling;
   if (outermost) begin_list_calls();
@@ -561,9 +621,26 @@ void Context::note_node_primitive(bool open) {
   if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count;
 }
 
+// Measured by the seed-8086 helper (repro list_vertexless_wrap_current.txt, seed 2026 stream 972):
+// a vertex list whose format holds an attribute besides the position and which has no vertex (a
+// glNormal or glColor first sent after the last vertex of a GL_POINTS wraps the store with nothing
+// to copy, and nothing follows before the flush; a primitive with attributes and no vertex) makes
+// Mesa's compile_vertex_list take its current_data from the store's first slot (vertex_count - 1
+// taken as 0), which that vertex list never wrote: glCallList then sets the current values from it
+// (a stale vertex of an earlier list, zeros in fresh memory). Named (row 55); a compiled draw's
+// vertex list copies nothing (no_current_update), and a list replayed through immediate mode replays
+// no vertex.
+void Context::note_vertexless_node() {
+  if (lists_.node_open && !lists_.node_draw && lists_.node_vertices == 0 && (lists_.attributes & 7))
+    lists_.compiling.vertexless = true;
+  lists_.node_vertices = 0;
+}
+
 void Context::end_list_node() {
+  lists_.carry = 0;  // the flush empties the store's format (list_vertex_compiled)
   if (lists_.open) note_node_primitive(true);
   lists_.node_last_mode = 0;
+  note_vertexless_node();
   if (lists_.node_open)
     lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
                                                               : lists_.vertices == 0 || lists_.loop_restarted ? 8  // row 68
@@ -615,6 +692,7 @@ void Context::split_list_node(int joining) {
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
   const int copy = lists_.node_draw || lists_.attributes == 0 ? 0 : lists_.open ? 2 : 1;
   if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining);
+  note_vertexless_node();
   close_store();
 }
 
@@ -722,6 +800,10 @@ void Context::compile_element(DisplayList& l, GLint i) {
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));
     if (format) hold_back(-1, int(vertex_array_.size)), store_vertex(-1, v);
+    if (lists_.open || lists_.compiling_draw)
+      list_vertex_compiled(l, (normal_array_.enabled && normal_array_.pointer ? 1 : 0) |
+                                  (color_array_.enabled && color_array_.pointer ? 2 : 0),
+                           forms_format(l));
     l.record<list_vertex>(v.x, v.y, v.z, v.w);
     if (inside) lists_.had_vertex = true, lists_.trailing = 0;
     // A glArrayElement in the list's glBegin: a line loop's first vertex keeps its values (counted in

@@ -75,6 +75,13 @@ inline constexpr const char* kListEmptyLoopCurrent =
     "past the vertices it kept, and sets the current values (and a tracked material) from that memory; soft "
     "leaves them as they were";
 
+// Row 55 (docs/deviations.md): named, not modelled (Context::note_vertexless_node).
+inline constexpr const char* kListVertexlessNode =
+    "a display list's vertex list with an attribute in its format and no vertex (a primitive without a vertex, or "
+    "an attribute first sent after a primitive's last vertex that wraps the store with nothing to copy, no vertex "
+    "following before the flush): when the list is called, Mesa copies the current values from a slot of its "
+    "vertex store that vertex list never wrote; soft leaves them as the vertices sent left them";
+
 // The fewest vertices a primitive of this mode draws anything with.
 inline int fewest_vertices(GLenum mode) {
   switch (mode) {
@@ -109,7 +116,10 @@ class DisplayList {
     Command<Fn>::put(*this, a...);
   }
   void replay() const;
-  void clear() { bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false, calls.clear(); }
+  void clear() {
+    bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false;
+    vertexless = false, calls.clear();
+  }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   bool padded_quad = false;  // a GL_QUADS or GL_QUAD_STRIP of three vertices (kListPaddedQuadDrawn)
   // Notes a primitive of `mode` with `vertices` that compiled into the list.
@@ -121,6 +131,7 @@ class DisplayList {
   // Context::mark_loopback), where a compiled draw's values become current.
   bool loopback = false;
   bool deduplicated = false;  // a vertex list of it lost repeated vertices, compiled before any loopback mark
+  bool vertexless = false;  // a vertex list of it has attributes and no vertex (kListVertexlessNode)
   std::vector<GLuint> calls;  // the names its glCallList and glCallLists compiled (without the list base)
   bool empty() const { return bytes_.empty(); }
 
@@ -173,6 +184,7 @@ struct ListState {
   // sizes of the colour and the position, kept from one primitive to the next until a flush.
   int stored = 0;
   int prims = 0;  // primitives begun in the store since then (a wrap leaves the one it interrupted)
+  int node_vertices = 0;  // the vertices of the open vertex list, a wrap's copies included (kListVertexlessNode)
   bool refill_error = false;  // a draw filled the store: the next flush raises an error (compile_elements)
   int attributes = 0;      // bits: normal, colour, texture, edge
   // Vertices of the open primitive a wrap copied into the next vertex list (Mesa's copied.nr), and
@@ -180,6 +192,9 @@ struct ListState {
   // (Mesa's ListState.ActiveAttribSize): bits as `attributes`.
   int wrap_copies = 0;
   int outside_attributes = 0;
+  // The shade model the list last compiled (Mesa's ListState.Current.ShadeModel; 0 after glNewList
+  // and a compiled glCallList): an equal glShadeModel is neither compiled nor a flush (soft_gl_entries.h).
+  GLenum shade_model = 0;
   bool replaying_loopback = false;  // the list running is replayed through immediate mode (DisplayList::loopback)
   // GL_COMPILE_AND_EXECUTE: the store's last primitive is a GL_LINE_LOOP ended in it, and the values
   // of its first vertex as the held-back calls ran (display_list.cpp, Context::run_held_back).
@@ -227,9 +242,17 @@ struct ListState {
   int trailing = 0;  // bits: normal 1, colour 2
   glm::dvec3 last_vertex_normal{0, 0, 1};
   glm::dvec4 last_vertex_color{1, 1, 1, 1};
+  // Mesa's vertex template keeps those trailing values: compiling, the attributes a later vertex of the
+  // list before the next flush carries (Context::list_vertex_compiled); running, their values.
+  int carry = 0;  // bits: normal 1, colour 2
+  glm::dvec3 carried_normal{0, 0, 1};
+  glm::dvec4 carried_color{1, 1, 1, 1};
   // GL_COMPILE_AND_EXECUTE: a wrap drew the list's primitive so far, but glGet reads the current
   // values from before it until the rest is flushed (display_list.cpp, Context::hold_back).
   bool shown = false;
+  // A glCallList or glCallLists compiled inside the list's glBegin (Context::list_fallback): the rest of
+  // that primitive compiles as calls executed at once, outside Mesa's vertex store.
+  bool fallback = false;
   // Compiling, for the rest of a wrapped primitive (display_list.cpp, Context::list_loopback): whether
   // the open primitive wrapped, and the attributes in the format at its first vertex.
   bool wrapped = false;

@@ -148,12 +148,21 @@ void Context::Vertex(double x, double y, double z, double w, int size) {
 // once a glVertex has been sent the colour's size and active size carry over to the next primitive
 // until a call that flushes the stored vertices. Soft still takes the pending values here (it
 // draws at glEnd; Mesa's draw reads them from the stored vertices).
-void Context::flush_stored_keeping_format() {
-  if (!format_has_position_) return flush_stored();
-  const int size = color_size_, active = color_active_;
-  const bool normal = normal_in_format_;
-  flush_stored();
-  color_size_ = size, color_active_ = active, normal_in_format_ = normal, format_has_position_ = true;
+void Context::flush_stored_keeping_format(bool begin) {
+  // Mesa copies the current values (mesa_normal_) here only at a glBegin whose format holds
+  // attributes and no position.
+  const bool copies = begin && !format_has_position_ && (color_size_ > 0 || normal_in_format_);
+  const glm::dvec3 mesa_normal = mesa_normal_;
+  const glm::dvec4 mesa_color = mesa_color_;
+  if (!format_has_position_) {
+    flush_stored();
+  } else {
+    const int size = color_size_, active = color_active_;
+    const bool normal = normal_in_format_;
+    flush_stored();
+    color_size_ = size, color_active_ = active, normal_in_format_ = normal, format_has_position_ = true;
+  }
+  if (!copies) mesa_normal_ = mesa_normal, mesa_color_ = mesa_color;
 }
 
 // A glVertex outside glBegin/glEnd draws nothing, but the position joins Mesa's vbo vertex format
@@ -174,7 +183,7 @@ void Context::Begin(GLenum mode) {
   if (lists_.depth > 0) vertices_kept_ = !spec_;  // a list's primitive: as before (not measured)
   else if (!format_has_position_ && (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()))
     vertices_kept_ = false;
-  flush_stored_keeping_format();
+  flush_stored_keeping_format(true);
   set_color_varies(false);
   wrap_start_ = 0;
   in_begin_ = true;

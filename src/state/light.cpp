@@ -241,6 +241,7 @@ void Context::update_color_material() {
 }
 
 void Context::copy_pending() {
+  mesa_normal_ = normal_, mesa_color_ = color_;
   const bool color_changed = color_ != flushed_color_;
   flushed_color_ = color_;
   for (const PendingMaterial& p : pending_materials_)

@@ -305,10 +305,12 @@ void Assembly::assemble(size_t n) {
     // for all of its primitives, and so takes that decomposition too, drawing smooth; so does
     // every glDrawElements of quads (measured: a smooth quad from elements 0,1,2,3 is split as
     // (q0, q1, q3), (q1, q2, q3), the same corners from glDrawArrays as the fan; quad strips and
-    // polygons from elements split as from arrays).
+    // polygons from elements split as from arrays). So does a display list's quad when glCallList
+    // draws it from its vertex list, an indexed draw (measured: repro list_quad_split.txt, seed 2026
+    // stream 486), not when Mesa replays the list through immediate mode (Context::list_indexed).
     case GL_QUADS:  // the 4th vertex provokes
       for (size_t i = 0; i + 3 < n; i += 4) {
-        if (pipeline_ || rs_.flat || any_outside_ || !c_.elements_.empty()) {  // edges: the quad's
+        if (pipeline_ || rs_.flat || any_outside_ || !c_.elements_.empty() || c_.list_indexed()) {  // edges: the quad's
           emit({i, i + 1, i + 3}, i + 3, GL_POLYGON_TOKEN, 0b101, true);
           emit({i + 1, i + 2, i + 3}, i + 3, GL_POLYGON_TOKEN, 0b011, false);
         } else {

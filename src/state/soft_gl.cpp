@@ -21,8 +21,8 @@ void APIENTRY ArrayElement(GLint i) {
     if (!c->list_state().open) c->end_list_node();  // its values compile as opcodes: a flush
     if (i >= 0) c->compile_element(*l, i);
     if (!c->list_executes() || i < 0) return;
-    if (c->list_state().open) return c->compile_element(c->list_held_back(), i);  // held back
-    c->run_held_back();  // outside the list's glBegin: executed at once (soft_gl_entries.h)
+    if (c->list_state().open && !c->list_state().fallback) return c->compile_element(c->list_held_back(), i);  // held back
+    if (!c->list_state().open) c->run_held_back();  // outside the list's glBegin: executed at once (soft_gl_entries.h)
   }
   c->ArrayElement(i);
 }
@@ -228,13 +228,14 @@ void APIENTRY CallList(GLuint l) {
   if (DisplayList* rec = c->list_recording()) {
     // Mesa's compiler forgets what the list compiled outside its glBegin (invalidate_saved_current_state),
     // and inside the list's glBegin falls back to replaying the list through immediate mode.
-    if (c->list_state().open) c->mark_loopback();
+    if (c->list_state().open) c->list_fallback();
     c->end_list_node();
     rec->record<CallListRecorded>(l);
     rec->calls.push_back(l);
-    c->list_state().outside_attributes = 0;
+    c->list_state().outside_attributes = 0, c->list_state().shade_model = 0;
     if (!c->list_executes()) return;
-    if (!c->list_state().open) c->run_held_back();
+    c->run_held_back();
+    c->fallen_back_run();  // inside the list's glBegin: Mesa's executing side is left inside it
   }
   if (l == 0) return c->record_error(GL_INVALID_VALUE);
   c->CallList(l);

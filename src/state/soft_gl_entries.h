@@ -57,6 +57,27 @@ bool compiled_only(const A&... a) {
     c->record_list_error(GL_INVALID_OPERATION);
     return true;
   }
+  if constexpr (same_entry<Fn, &ShadeModel>()) {
+    // Mesa's save_ShadeModel (dlist.c), unlike the other state calls, executes first in
+    // GL_COMPILE_AND_EXECUTE, before the list's store is flushed (so a primitive held back is drawn
+    // with the new model and its values stay pending on the executing side), and where the list's
+    // last compiled shade model is the same it is neither compiled nor a flush. Measured: repro
+    // list_shade_model_order.txt.
+    // Executed inside the list's wrapped glBegin, the executing side refuses it (measured).
+    if (c->list_executes() && c->inside_begin()) c->record_error(GL_INVALID_OPERATION);
+    else if (c->list_executes()) {
+      ++ls.depth;  // executes, recording nothing
+      Fn(a...);
+      --ls.depth;
+    }
+    const GLenum mode = GLenum(a...);
+    if (ls.shade_model == mode) return true;
+    ls.shade_model = mode;
+    c->end_list_node();
+    l->record<Fn>(a...);
+    if (c->list_executes()) c->run_held_back();
+    return true;
+  }
   // Outside the list's own glBegin/glEnd a vertex-stream call other than glBegin and glEnd compiles
   // as a state call does (Mesa swaps its vertex format out there: "compiled as opcodes"), so in
   // GL_COMPILE_AND_EXECUTE it flushes what was held back and executes at once (measured: glNormal3d
@@ -79,12 +100,23 @@ bool compiled_only(const A&... a) {
     if (!valid_primitive(GLenum(a...))) return c->record_list_error(primitive_error(GLenum(a...))), true;
   }
   if constexpr (K == ListKind::Vertex) {
+    // After a glCallList inside the list's glBegin the rest of the primitive compiles as calls that
+    // GL_COMPILE_AND_EXECUTE executes at once, outside the vertex store (Context::list_fallback).
+    if (ls.open && ls.fallback) {
+      if constexpr (same_entry<Fn, &End>()) ls.open = ls.fallback = ls.shown = false;
+      l->record<Fn>(a...);
+      return !c->list_executes();
+    }
     if constexpr (same_entry<Fn, &Begin>())
-      ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
+      ls.fallback = false, ls.open = true, ls.vertices = ls.primitive_vertices = 0, ls.open_mode = GLenum(a...), ls.had_vertex = false,
       ls.trailing = 0, ls.wrapped = false, ++ls.prims, ls.wrap_copies = 0, ls.closing_loop = ls.loop_restarted = false;
-    if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1);
-    if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2);
-    if constexpr (same_entry<Fn, &VertexValues>()) ls.had_vertex = true, ls.trailing = 0;
+    if constexpr (same_entry<Fn, &NormalValues>()) c->list_trailing(*l, 1), ls.carry &= ~1;
+    if constexpr (same_entry<Fn, &ColorValues>()) c->list_trailing(*l, 2), ls.carry &= ~2;
+    if constexpr (same_entry<Fn, &VertexValues>()) {
+      // A vertex after an earlier primitive's trailing values carries them (Context::list_vertex_compiled).
+      if (ls.open) c->list_vertex_compiled(*l, 0, !c->list_executes());
+      ls.had_vertex = true, ls.trailing = 0;
+    }
     if constexpr (same_entry<Fn, &End>()) {
       // A glEnd without its glBegin in the list: Mesa records it, and in GL_COMPILE_AND_EXECUTE
       // executes it now as a state call (measured: GL_INVALID_OPERATION after a refused glBegin).
@@ -96,6 +128,7 @@ bool compiled_only(const A&... a) {
         return false;
       }
       c->note_node_primitive(false);
+      if (ls.had_vertex) ls.carry |= ls.trailing;  // left in Mesa's vertex template (Context::list_vertex_compiled)
       ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
       l->note_primitive(ls.open_mode, ls.primitive_vertices);
     }
@@ -122,6 +155,8 @@ bool compiled_only(const A&... a) {
       const auto v = std::tie(a...);
       c->store_vertex(kind, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
     }
+    if constexpr (same_entry<Fn, &VertexValues>())
+      if (ls.open && c->list_executes()) c->list_vertex_compiled(c->list_held_back(), 0, true);
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);
     if constexpr (same_entry<Fn, &VertexValues>()) {
       c->note_loop_first_vertex(*l);
