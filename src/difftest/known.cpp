@@ -162,6 +162,34 @@ bool incomplete_list_primitive(const Stream& s, const SideResult& soft, size_t a
   return false;
 }
 
+// Whether a list compiled before call `at` changes primitive mode at least twice from one primitive
+// to the next (glBegin/glEnd, or a compiled glDrawArrays or glDrawElements): measured, Mesa feeds
+// back only the first mode's primitives of such a list and segfaults in glCallList at the second
+// change (GL_POINTS, GL_QUADS, GL_LINES; seed 555 stream 303, repro
+// list_modes_fed_back_crash.txt). Calls between the primitives were not varied.
+bool list_modes_change_twice(const Stream& s, const SideResult& soft, size_t at) {
+  bool compiling = false, open = false;
+  GLenum last = 0;
+  int changes = 0, primitives = 0;
+  for (size_t i = 0; i < at && i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if (n == "glNewList" && ok && !compiling) compiling = true, open = false, changes = primitives = 0;
+    if (n == "glEndList") compiling = false;
+    if (!compiling) continue;
+    const bool begins = n == "glBegin" && ok && !open;
+    if (begins) open = true;
+    else if (n == "glEnd") open = false;
+    if (begins || (!open && (n == "glDrawArrays" || n == "glDrawElements") && ok)) {
+      const GLenum mode = GLenum(s[i].args[0].num);
+      if (primitives++ > 0 && mode != last) ++changes;
+      last = mode;
+      if (changes >= 2) return true;
+    }
+  }
+  return false;
+}
+
 // A deviation soft reported while drawing, which can only change what was drawn.
 // A deviation soft names when it draws: it explains what drawing shows (pictures, feedback, the
 // selection buffer's hit records and the count glRenderMode returns) in a stream where soft named it.
@@ -306,11 +334,12 @@ const std::vector<KnownDeviation>& known_deviations() {
       // Row 66: the crash, read from the stream (Mesa takes a glRenderMode(GL_SELECT) soft refuses
       // without a buffer, so soft may be drawing where Mesa feeds back).
       {"mesa-list-incomplete-fed-back-crash",
-       "Mesa 22.3 segfaults in glCallList of a list holding a primitive too short to draw, in GL_FEEDBACK or "
-       "GL_SELECT (GL: nothing drawn); soft draws nothing of it",
+       "Mesa 22.3 segfaults in glCallList of a list holding a primitive too short to draw, or changing "
+       "primitive mode twice, in GL_FEEDBACK or GL_SELECT (GL: each drawn or, too short, not); soft draws them",
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          if (m.kind != "crash" || m.key != "crash mesa glCallList" || m.call < 0) return false;
-         return fed_back_at(s, size_t(m.call)) && incomplete_list_primitive(s, soft, size_t(m.call));
+         return fed_back_at(s, size_t(m.call)) && (incomplete_list_primitive(s, soft, size_t(m.call)) ||
+                                                  list_modes_change_twice(s, soft, size_t(m.call)));
        },
        true},
       // Row 55: its vertex list has no vertex, and running the list (GL_COMPILE_AND_EXECUTE or

@@ -56,8 +56,9 @@ void Context::flush_vertices() {
 // While a list compiles Mesa runs the calls that are not compiled through its compiling dispatch,
 // which has no such check, so a GL_COMPILE_AND_EXECUTE list's wrapped primitive (display_list.cpp)
 // leaves them taken (measured: glGet*, glGetLight, glGetMaterial, client state, glPixelStore,
-// glFeedbackBuffer, glSelectBuffer, glReadPixels); glIsEnabled, glRenderMode and glGetError check
-// for themselves.
+// glFeedbackBuffer, glSelectBuffer, glReadPixels); glIsEnabled, glRenderMode, glGetError and
+// glGetString check for themselves (getstring.c's ASSERT_OUTSIDE_BEGIN_END_WITH_RETVAL reads the
+// executing side, CurrentExecPrimitive: repro list_get_string_executing_inside.txt).
 bool Context::outside_begin_end_keeping_vertices() {
   if (in_begin_ && lists_.mode == 0) error(GL_INVALID_OPERATION);
   return !in_begin_ || lists_.mode != 0;
@@ -76,7 +77,7 @@ void Context::Finish() { outside_begin_end(); }
 void Context::Flush() { outside_begin_end(); }
 
 const GLubyte* Context::GetString(GLenum name) {
-  if (!outside_begin_end_keeping_vertices()) return nullptr;
+  if (in_begin_) return error(GL_INVALID_OPERATION), nullptr;  // while a list compiles too, as glIsEnabled
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>("ffcompat");
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>("ffcompat soft (fixed-function)");
