@@ -41,7 +41,7 @@ void Workers::run_impl(void* fn, void (*call)(void*, int), int shares) {
     return;
   }
   start(fn, call, shares);
-  take_shares(generation_.load());
+  take_shares({generation_.load(), shares, fn, call});
   // The shares are about equal: the others finish soon after this one, so spin rather than sleep.
   while (done_.load(std::memory_order_acquire) != shares) spin_pause();
 }
@@ -72,13 +72,16 @@ void Workers::start(void* fn, void (*call)(void*, int), int shares) {
   wake_.notify_all();
 }
 
-void Workers::take_shares(uint64_t generation) {
+// The run's own values, not the members: a thread that finished the last share of one run may still
+// be here when the caller starts the next, and the next's share count read with this run's ticket
+// would let it take (and run with the next run's function) a share of this run that never existed.
+void Workers::take_shares(const Run& run) {
   uint64_t t = ticket_.load(std::memory_order_acquire);
   for (;;) {
     const int share = int(t & 0xFFFFFFFF);
-    if (t >> 32 != generation || share >= shares_) return;
+    if (t >> 32 != run.generation || share >= run.shares) return;
     if (!ticket_.compare_exchange_weak(t, t + 1, std::memory_order_acq_rel)) continue;
-    call_(fn_, share);
+    run.call(run.fn, share);
     done_.fetch_add(1, std::memory_order_acq_rel);
     t = ticket_.load(std::memory_order_acquire);
   }
@@ -89,13 +92,15 @@ void Workers::loop() {
   for (;;) {
     // A draw's phases follow each other within microseconds: spin a little before sleeping.
     for (int spin = 0; spin < 20000 && generation_.load(std::memory_order_acquire) == seen; ++spin) spin_pause();
+    Run run;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return generation_.load() != seen; });
       seen = generation_.load();
       if (stop_) return;
+      run = {seen, shares_, fn_, call_};  // as start() left them, under its lock
     }
-    take_shares(seen);
+    take_shares(run);
   }
 }
 

@@ -40,8 +40,14 @@ class Workers {
  private:
   void run_impl(void* fn, void (*call)(void*, int), int shares);
   void start(void* fn, void (*call)(void*, int), int shares);  // run_impl's half before the caller takes shares
+  struct Run {
+    uint64_t generation = 0;
+    int shares = 0;
+    void* fn = nullptr;
+    void (*call)(void*, int) = nullptr;
+  };
   void loop();
-  void take_shares(uint64_t generation);
+  void take_shares(const Run& run);
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;

@@ -160,8 +160,9 @@ int64_t round_even(float v) {
 
 // On x86 built twice, with and without FMA instructions (chosen at load time): std::fma is one
 // instruction where the CPU has it, a library call otherwise; the same bits either way. (AArch64
-// always has it.)
-#if FFCOMPAT_X86
+// always has it.) Not under ThreadSanitizer: the chooser runs as the program loads, before the
+// sanitizer's runtime, and its instrumented code crashes there.
+#if FFCOMPAT_X86 && !defined(__SANITIZE_THREAD__)
 __attribute__((target_clones("fma", "default")))
 #endif
 FloatWindow map_float(const glm::vec4& clip, const State& s) {

@@ -646,14 +646,17 @@ class Context {
   // would change with it).
   static constexpr size_t kEarlyCorners = 3072;
   size_t early_corners_ = kEarlyCorners;
-  struct EarlyDraw {
+  struct EarlyDraw {  // the application's thread's own
     size_t next = SIZE_MAX;  // list_corner_.size() at which to try a handoff
-    size_t lit = 0;          // entries lit and mapped into list_vertices_
-    size_t drawn = 0;        // triangles drawn
+    size_t lit = 0;          // entries lit and mapped into list_vertices_ (or by the job in flight)
+    size_t drawn = 0;        // triangles drawn (or by the job in flight)
     bool in_flight = false;  // a job posted and not yet joined
-    // The job, taken on the application's thread: entries [first, lit) and triangles
-    // [tri_first, drawn), read through pointers that stay valid while it runs.
-    size_t first = 0, tri_first = 0;
+  } early_;
+  // The job: written by early_handoff before it posts, read by the job only (entries [first, lit)
+  // and triangles [tri_first, drawn), through pointers that stay valid while it runs); what it
+  // found is read after the join.
+  struct EarlyJob {
+    size_t first = 0, lit = 0, tri_first = 0, drawn = 0;
     const glm::vec4* pos = nullptr;
     const glm::dvec3* normal = nullptr;  // null: cur_normal for every entry
     const glm::dvec4* color = nullptr;   // null: cur_color
@@ -662,9 +665,8 @@ class Context {
     glm::dvec4 cur_color{0};
     raster::State rs;
     raster::ClearRequest clear;
-    // What it found, merged by early_join.
     bool zero_normal = false, sliver = false;
-  } early_;
+  } early_job_;
   // Whether corners drawn early lay after the last wrap (End's "stored"), once leave_triangle_list
   // has dropped them from the primitive.
   bool early_after_wrap_ = false;

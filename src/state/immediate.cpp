@@ -259,7 +259,7 @@ void Context::early_handoff() {
   // job kept short leaves the rest to glEnd's threads when the calls outrun it.
   const size_t triangles = std::min(list_corner_.size() / 3, early_.drawn + 2 * early_corners_ / 3);
   update_vertex_constants();  // the job's stage reads them; nothing runs now
-  EarlyDraw& j = early_;
+  EarlyJob& j = early_job_;
   j.rs = raster_state();
   // Room for every entry so far: growing value-initialises the new records, work the application's
   // thread would do at every handoff, so it grows to the lists' capacity, and a frame that sends
@@ -272,8 +272,8 @@ void Context::early_handoff() {
     bins_.reserve(bins_reserved_, workers().size());
     early_bins_.reserve(bins_reserved_, 1);
   }
-  j.first = j.lit, j.lit = list_pos_.size();
-  j.tri_first = j.drawn, j.drawn = triangles;
+  j.first = early_.lit, j.lit = early_.lit = list_pos_.size();
+  j.tri_first = early_.drawn, j.drawn = early_.drawn = triangles;
   j.pos = list_pos_.data();
   j.normal = list_normal_.empty() ? nullptr : list_normal_.data();
   j.color = list_color_.empty() ? nullptr : list_color_.data();
@@ -281,17 +281,17 @@ void Context::early_handoff() {
   j.cur_normal = normal_, j.cur_color = color_;
   j.clear = pending_clear_;
   pending_clear_ = {};
-  j.in_flight = true;
-  j.next = triangles < list_corner_.size() / 3 ? list_corner_.size() : j.drawn * 3 + early_corners_;
+  early_.in_flight = true;
+  early_.next = triangles < list_corner_.size() / 3 ? list_corner_.size() : triangles * 3 + early_corners_;
   workers().post([](void* c) { static_cast<Context*>(c)->early_job(); }, this);
 }
 
 void Context::early_wait() {
   workers_->wait_posted();
   early_.in_flight = false;
-  if (early_.zero_normal) deviations_.insert(kZeroNormal);
-  if (early_.sliver) deviations_.insert(kClippedSliver);  // docs/deviations.md row 63
-  early_.zero_normal = early_.sliver = false;
+  if (early_job_.zero_normal) deviations_.insert(kZeroNormal);
+  if (early_job_.sliver) deviations_.insert(kClippedSliver);  // docs/deviations.md row 63
+  early_job_.zero_normal = early_job_.sliver = false;
 }
 
 // Also lights the vertices kept for the batch: the caller is about to change what they read.

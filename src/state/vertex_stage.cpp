@@ -511,9 +511,9 @@ void Context::immediate_to_list() {
   stage_to_list(fetch, GLint(lit), GLint(n - lit), false, lit);
 }
 
-// On a worker thread: reads only what early_handoff took and the lists' complete part.
+// On a worker thread: reads only what early_handoff took (early_job_) and the lists' complete part.
 void Context::early_job() {
-  const EarlyDraw j = early_;  // a copy: the application's thread goes on writing early_.next
+  EarlyJob& j = early_job_;
   const auto fetch = [&j](GLint i) {
     const size_t k = size_t(i);
     return VertexIn{glm::dvec4(j.pos[k]), j.normal ? j.normal[k] : j.cur_normal, j.color ? j.color[k] : j.cur_color};
@@ -523,8 +523,8 @@ void Context::early_job() {
   const uint64_t slivers = counters_.clipped_slivers.load(std::memory_order_relaxed);
   raster::draw_triangle_list(fb_, j.rs, list_vertices_, j.corners + 3 * j.tri_first, j.drawn - j.tri_first, early_workers_,
                              early_bins_, j.clear);
-  early_.zero_normal |= zero;
-  early_.sliver |= counters_.clipped_slivers.load(std::memory_order_relaxed) != slivers;
+  j.zero_normal |= zero;
+  j.sliver |= counters_.clipped_slivers.load(std::memory_order_relaxed) != slivers;
 }
 
 }  // namespace ffc::state
