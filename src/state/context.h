@@ -10,6 +10,7 @@
 #include <GL/gl.h>
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <glm/glm.hpp>
@@ -120,6 +121,11 @@ class Context {
   // triangles to a thread of its own every `corners` corners sent (0: never; the default from
   // FFCOMPAT_EARLY_CORNERS, else kEarlyCorners). The picture does not change.
   void set_early_corners(size_t corners) { early_corners_ = corners; }
+  // The job draws this many triangles between two looks at whether a join wants it to stop
+  // (kEarlyChunk; tests take 1). The picture does not change.
+  void set_early_chunk(size_t triangles) { early_chunk_ = triangles < 1 ? 1 : triangles; }
+  // Joins that found the job in flight with triangles left and stopped it after its chunk.
+  size_t early_stops() const { return early_.stops; }
   // Inline: every entry point reads it (a call per glVertex cost as much as the store it guards).
   static Context* current() { return current_; }
   static void make_current(Context* c);
@@ -651,12 +657,19 @@ class Context {
     size_t lit = 0;          // entries lit and mapped into list_vertices_ (or by the job in flight)
     size_t drawn = 0;        // triangles drawn (or by the job in flight)
     bool in_flight = false;  // a job posted and not yet joined
+    size_t stops = 0;        // early_stops()
   } early_;
   // The job: written by early_handoff before it posts, read by the job only (entries [first, lit)
   // and triangles [tri_first, drawn), through pointers that stay valid while it runs); what it
-  // found is read after the join.
+  // found is read after the join. It draws its triangles kEarlyChunk at a time and stops after
+  // the chunk it is in when `stop` is set (early_wait): `reached` says how far it got, and the
+  // caller draws the rest, so a join waits for a chunk rather than for the whole job.
+  static constexpr size_t kEarlyChunk = 512;
+  size_t early_chunk_ = kEarlyChunk;
   struct EarlyJob {
-    size_t first = 0, lit = 0, tri_first = 0, drawn = 0;
+    size_t first = 0, lit = 0, tri_first = 0, drawn = 0, chunk = kEarlyChunk;
+    size_t reached = 0;  // triangles drawn, [tri_first, reached): written by the job
+    std::atomic<bool> stop{false};
     const glm::vec4* pos = nullptr;
     const glm::dvec3* normal = nullptr;  // null: cur_normal for every entry
     const glm::dvec4* color = nullptr;   // null: cur_color

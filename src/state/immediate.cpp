@@ -255,9 +255,9 @@ void Context::early_handoff() {
     early_.next = SIZE_MAX;
     return;
   }
-  // At most two handoffs' worth at once: glEnd waits for the job in flight on one thread, and a
-  // job kept short leaves the rest to glEnd's threads when the calls outrun it.
-  const size_t triangles = std::min(list_corner_.size() / 3, early_.drawn + 2 * early_corners_ / 3);
+  // Every complete triangle: a join stops the job after its chunk (early_wait), so a long job
+  // costs glEnd no longer wait than a short one.
+  const size_t triangles = list_corner_.size() / 3;
   update_vertex_constants();  // the job's stage reads them; nothing runs now
   EarlyJob& j = early_job_;
   j.rs = raster_state();
@@ -273,7 +273,9 @@ void Context::early_handoff() {
     early_bins_.reserve(bins_reserved_, 1);
   }
   j.first = early_.lit, j.lit = early_.lit = list_pos_.size();
-  j.tri_first = early_.drawn, j.drawn = early_.drawn = triangles;
+  j.tri_first = j.reached = early_.drawn, j.drawn = early_.drawn = triangles;
+  j.chunk = early_chunk_;
+  j.stop.store(false, std::memory_order_relaxed);  // published by the post
   j.pos = list_pos_.data();
   j.normal = list_normal_.empty() ? nullptr : list_normal_.data();
   j.color = list_color_.empty() ? nullptr : list_color_.data();
@@ -282,13 +284,16 @@ void Context::early_handoff() {
   j.clear = pending_clear_;
   pending_clear_ = {};
   early_.in_flight = true;
-  early_.next = triangles < list_corner_.size() / 3 ? list_corner_.size() : triangles * 3 + early_corners_;
+  early_.next = triangles * 3 + early_corners_;
   workers().post([](void* c) { static_cast<Context*>(c)->early_job(); }, this);
 }
 
 void Context::early_wait() {
+  early_job_.stop.store(true, std::memory_order_relaxed);  // the job stops after its chunk
   workers_->wait_posted();
   early_.in_flight = false;
+  if (early_job_.reached < early_job_.drawn) ++early_.stops;
+  early_.drawn = early_job_.reached;  // the rest is the caller's
   if (early_job_.zero_normal) deviations_.insert(kZeroNormal);
   if (early_job_.sliver) deviations_.insert(kClippedSliver);  // docs/deviations.md row 63
   early_job_.zero_normal = early_job_.sliver = false;

@@ -521,8 +521,15 @@ void Context::early_job() {
   bool zero = false;
   stage_list_part(fetch, 0, GLint(j.first), GLint(j.lit), false, 0, j.rs, &zero);
   const uint64_t slivers = counters_.clipped_slivers.load(std::memory_order_relaxed);
-  raster::draw_triangle_list(fb_, j.rs, list_vertices_, j.corners + 3 * j.tri_first, j.drawn - j.tri_first, early_workers_,
-                             early_bins_, j.clear);
+  // A chunk at a time, in order: stopped between two, the triangles drawn are [tri_first, reached)
+  // on every row, and the caller draws the rest after them.
+  raster::ClearRequest clear = j.clear;  // with the first chunk (or alone, with none)
+  do {
+    const size_t n = std::min(j.chunk, j.drawn - j.reached);
+    raster::draw_triangle_list(fb_, j.rs, list_vertices_, j.corners + 3 * j.reached, n, early_workers_, early_bins_, clear);
+    clear = {};
+    j.reached += n;
+  } while (j.reached < j.drawn && !j.stop.load(std::memory_order_relaxed));
   j.zero_normal |= zero;
   j.sliver |= counters_.clipped_slivers.load(std::memory_order_relaxed) != slivers;
 }

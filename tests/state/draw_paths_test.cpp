@@ -188,12 +188,14 @@ struct Breaks {
   size_t first_color_at = 0;      // no glColor before this corner
 };
 
-Picture draw_early(const std::vector<Soup>& soups, size_t early, bool color_material, const Breaks& br,
-                   std::vector<double>* after) {
+Picture draw_early(const std::vector<Soup>& soups, size_t early, size_t chunk, bool color_material, const Breaks& br,
+                   std::vector<double>* after, size_t* stops = nullptr) {
   auto soft = backends::make("soft");
   soft->begin(kSize, kSize);
   state::Context* c = state::Context::current();
+  c->set_threads(2);
   c->set_early_corners(early);
+  c->set_early_chunk(chunk);
   set_up(color_material);
   for (const Soup& s : soups) {
     if (&s != &soups.front()) glRotatef(25, 0.3f, 1, 0);
@@ -220,22 +222,29 @@ Picture draw_early(const std::vector<Soup>& soups, size_t early, bool color_mate
   GLfloat diffuse[4];
   glGetMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
   for (int k = 0; k < 4; ++k) (*after)[8 + size_t(k)] = diffuse[k];
+  if (stops) *stops += c->early_stops();
   const raster::Framebuffer& fb = c->framebuffer();
   return {fb.color, fb.depth};
 }
 
-void expect_early_same(const std::vector<Soup>& soups, bool color_material, const Breaks& br) {
+// Returns the joins that stopped a job.
+size_t expect_early_same(const std::vector<Soup>& soups, bool color_material, const Breaks& br) {
   std::vector<double> want_after, got_after;
-  const Picture want = draw_early(soups, 0, color_material, br, &want_after);
+  const Picture want = draw_early(soups, 0, 1, color_material, br, &want_after);
   size_t drawn = 0;
   for (size_t i = 0; i < want.color.size(); i += 4) drawn += want.color[i] != 0;
   EXPECT_GT(drawn, want.color.size() / 4 / 4);
-  for (size_t early : {3, 4, 7, 100, 3072}) {
-    const Picture got = draw_early(soups, early, color_material, br, &got_after);
-    EXPECT_TRUE(got.color == want.color) << "every " << early << " corners";
-    EXPECT_TRUE(got.depth == want.depth) << "every " << early << " corners";
-    EXPECT_EQ(got_after, want_after) << "every " << early << " corners";
+  // Chunks of one triangle: nearly every join finds the job with triangles left and stops it,
+  // leaving them to the caller.
+  size_t stops = 0;
+  for (const auto& [early, chunk] : {std::pair<size_t, size_t>{3, 1}, {4, 512}, {7, 2}, {100, 1}, {3072, 1}, {3072, 7},
+                                     {3072, 512}}) {
+    const Picture got = draw_early(soups, early, chunk, color_material, br, &got_after, &stops);
+    EXPECT_TRUE(got.color == want.color) << "every " << early << " corners, chunks of " << chunk;
+    EXPECT_TRUE(got.depth == want.depth) << "every " << early << " corners, chunks of " << chunk;
+    EXPECT_EQ(got_after, want_after) << "every " << early << " corners, chunks of " << chunk;
   }
+  return stops;
 }
 
 TEST(DrawPaths, EarlyDrawsGiveThePictureOfADrawAtGlEnd) {
@@ -246,14 +255,16 @@ TEST(DrawPaths, EarlyDrawsGiveThePictureOfADrawAtGlEnd) {
     return b;
   };
   constexpr size_t kNever = SIZE_MAX;
-  expect_early_same({g}, false, {});
-  expect_early_same({g, f}, false, {});                              // two glBegins
-  expect_early_same({g}, false, breaks(4001, kNever, 0));            // the general path from mid-triangle
-  expect_early_same({g}, false, breaks(3, kNever, 0));
-  expect_early_same({g}, false, breaks(kNever, 5000, 0));            // a wrap with alpha 1
-  expect_early_same({g}, true, breaks(kNever, 2002, 0));             // colour material, the wrap
-  expect_early_same({g}, true, breaks(kNever, kNever, 6000));        // colour material, no colour until late
-  expect_early_same({g, f}, true, breaks(7000, 3000, 0));
+  size_t stops = 0;
+  stops += expect_early_same({g}, false, {});
+  stops += expect_early_same({g, f}, false, {});                              // two glBegins
+  stops += expect_early_same({g}, false, breaks(4001, kNever, 0));            // the general path from mid-triangle
+  stops += expect_early_same({g}, false, breaks(3, kNever, 0));
+  stops += expect_early_same({g}, false, breaks(kNever, 5000, 0));            // a wrap with alpha 1
+  stops += expect_early_same({g}, true, breaks(kNever, 2002, 0));             // colour material, the wrap
+  stops += expect_early_same({g}, true, breaks(kNever, kNever, 6000));        // colour material, no colour until late
+  stops += expect_early_same({g, f}, true, breaks(7000, 3000, 0));
+  EXPECT_GT(stops, 0U);  // the stopped jobs' rest drawn by the caller
 }
 
 }  // namespace
