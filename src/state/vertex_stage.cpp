@@ -176,7 +176,8 @@ class VertexStage {
     const bool lit = c_.lighting_, need_eye = lit || fog_depth_;
     const size_t lanes = lighting::soa_lanes();
     const size_t padded = std::min(P, (size_t(m) + lanes - 1) / lanes * lanes);
-    if (float_arrays_) fetch_float_arrays(first, m, obj, color, raw, out.unlit);
+    if constexpr (std::is_same_v<Fetch, ListFetch>) fetch_list(fetch, first, m, obj, color, raw, out.unlit);
+    else if (float_arrays_) fetch_float_arrays(first, m, obj, color, raw, out.unlit);
     else for (int j = 0; j < m; ++j) {
       const VertexIn in = fetch(first + j);
       for (int k = 0; k < 4; ++k) obj[k][j] = float(in.obj[k]);
@@ -210,6 +211,37 @@ class VertexStage {
     const lighting::SoaIn in{{eye[0], eye[1], eye[2], eye[3]}, {normal[0], normal[1], normal[2]},
                              {color[0], color[1], color[2], color[3]}};
     lighting::light_soa(c_.prepared_f_, in, size_t(m), out.columns(c_.prepared_f_.key));
+  }
+  // Immediate mode's kept vertices first + j, j in [0, m), into the columns: the positions a
+  // vector at a time, the colours only where the lighting or the unlit path reads them.
+  template <size_t P>
+  void fetch_list(const ListFetch& f, GLint first, int m, float (&obj)[4][P], float (&color)[4][P], double (&raw)[3][P],
+                  glm::dvec4* unlit) const {
+    float* const cols[4] = {obj[0], obj[1], obj[2], obj[3]};
+    float_columns(reinterpret_cast<const uint8_t*>(f.pos + first), 4, size_t(m), cols);
+    const bool lit = c_.lighting_;
+    const glm::dvec4* const colors = f.color ? f.color + first : nullptr;
+    if (!lit) {
+      for (int j = 0; j < m; ++j) {
+        const glm::dvec4 c = colors ? colors[j] : f.cur_color;
+        // Clamped to [0,1], a NaN to 1, as the generic fetch (run_columns).
+        for (int k = 0; k < 4; ++k) unlit[j][k] = !(c[k] < 1) ? 1.0 : c[k] > 0 ? c[k] : 0.0;
+      }
+      return;
+    }
+    if (f.normal) {
+      const glm::dvec3* const normals = f.normal + first;
+      for (int j = 0; j < m; ++j)
+        for (int k = 0; k < 3; ++k) raw[k][j] = normals[j][k];
+    } else {
+      for (int k = 0; k < 3; ++k) std::fill(raw[k], raw[k] + m, f.cur_normal[k]);
+    }
+    // The lighting reads the colour only for colour material (lighting_simd.cpp).
+    if (!c_.prepared_f_.key.color_material()) return;
+    for (int j = 0; j < m; ++j) {
+      const glm::dvec4 c = colors ? colors[j] : f.cur_color;
+      for (int k = 0; k < 4; ++k) color[k][j] = float(c[k]);
+    }
   }
   // array_vertex(first + j), j in [0, m), into the columns when every array read holds floats:
   // the values it would give (a float in double, then back to float, is the float), without the
@@ -489,11 +521,8 @@ void Context::arrays_to_list(GLint first, GLint count) {
 // kept is not read, and the current value stands in.
 // Those lit early (early_.lit) are in place already; the early job in flight is joined here.
 void Context::immediate_to_list() {
-  const auto fetch = [this](GLint i) {
-    const size_t k = size_t(i);
-    return VertexIn{glm::dvec4(list_pos_[k]), list_normal_.empty() ? normal_ : list_normal_[k],
-                    list_color_.empty() ? color_ : list_color_[k]};
-  };
+  const ListFetch fetch{list_pos_.data(), list_normal_.empty() ? nullptr : list_normal_.data(),
+                        list_color_.empty() ? nullptr : list_color_.data(), normal_, color_};
   const size_t n = list_pos_.size();
   if (early_.in_flight && !constants_dirty_ && n > early_.lit) {
     // The rest lit on this thread while the job finishes: other records of list_vertices_, the
@@ -514,10 +543,7 @@ void Context::immediate_to_list() {
 // On a worker thread: reads only what early_handoff took (early_job_) and the lists' complete part.
 void Context::early_job() {
   EarlyJob& j = early_job_;
-  const auto fetch = [&j](GLint i) {
-    const size_t k = size_t(i);
-    return VertexIn{glm::dvec4(j.pos[k]), j.normal ? j.normal[k] : j.cur_normal, j.color ? j.color[k] : j.cur_color};
-  };
+  const ListFetch fetch{j.pos, j.normal, j.color, j.cur_normal, j.cur_color};
   bool zero = false;
   stage_list_part(fetch, 0, GLint(j.first), GLint(j.lit), false, 0, j.rs, &zero);
   const uint64_t slivers = counters_.clipped_slivers.load(std::memory_order_relaxed);

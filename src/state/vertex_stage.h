@@ -15,6 +15,22 @@ struct VertexIn {
   glm::dvec4 color;
 };
 
+// Immediate mode's kept vertices (Context::list_pos_, list_normal_, list_color_): positions in
+// float, normals and colours in double, a list null where the current value stands for every
+// vertex. The float stage reads them straight into its columns (VertexStage::fetch_list), the
+// values fetch(i) gives without a record in double between; the double stage calls fetch(i).
+struct ListFetch {
+  const glm::vec4* pos = nullptr;
+  const glm::dvec3* normal = nullptr;  // null: cur_normal
+  const glm::dvec4* color = nullptr;   // null: cur_color
+  glm::dvec3 cur_normal{0};
+  glm::dvec4 cur_color{0};
+  VertexIn operator()(int i) const {
+    const size_t k = size_t(i);
+    return {glm::dvec4(pos[k]), normal ? normal[k] : cur_normal, color ? color[k] : cur_color};
+  }
+};
+
 // The float stage's transforms on columns (vertex_stage_simd.cpp, Highway, the scalar code's bits
 // on every target). Columns are read and written up to `count` rounded up to a multiple of the
 // vector length (lighting::kSoaPad covers every target); `clip` only up to `count`.
