@@ -10,6 +10,7 @@
 #include <cstring>
 #include <random>
 
+#include "raster/row_loop.h"
 #include "raster/wide/kernels.h"
 #include "triangles.h"
 
@@ -17,6 +18,20 @@ namespace ffc {
 namespace {
 
 using namespace raster_test;
+
+// Band b belongs to thread b % count; next[b] is a thread's first band at or after b.
+TEST(Bands, NextIsTheFirstBandAtOrAfterThatTheThreadOwns) {
+  for (int count = 1; count <= 5; ++count)
+    for (int mine = 0; mine < count; ++mine) {
+      const raster::detail::Bands bands(mine, count);
+      for (int b = 0; b <= raster::detail::Bands::kMax; ++b) {
+        int want = b;
+        while (want % count != mine) ++want;
+        ASSERT_EQ(bands.next[size_t(b)], want) << "band " << b << ", thread " << mine << " of " << count;
+        EXPECT_EQ(bands.owns(b), b % count == mine);
+      }
+    }
+}
 
 class BoxKernel : public ::testing::TestWithParam<GLenum> {
  protected:
