@@ -11,7 +11,7 @@
 
 namespace ffc::raster {
 
-namespace {
+namespace detail {  // declared in triangle_list_parts.h
 
 // One vertex: outside_planes, then map_float.
 void map_one(ListVertices& vs, size_t i, const State& s) {
@@ -26,6 +26,12 @@ void map_one(ListVertices& vs, size_t i, const State& s) {
   v.x = w.x, v.y = w.y_down, v.z = w.z;
   vs.snapped[i] = {int32_t(w.sx), int32_t(w.sy)};
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::map_one;
 
 #if FFCOMPAT_X86
 // Fused multiply-add of four floats: one instruction where the CPU has it, four library calls
@@ -93,6 +99,7 @@ bool map_four(ListVertices& vs, size_t i, const State& s) {
 
 void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s) {
   size_t i = first;
+  if (detail::wide_kernels()) i = detail::map_list_wide(vs, first, first + count, s);
 #if FFCOMPAT_X86
   static const bool fma = __builtin_cpu_supports("fma");
   for (; i + 4 <= first + count; i += 4)

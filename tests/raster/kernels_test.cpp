@@ -11,6 +11,7 @@
 #include <random>
 
 #include "raster/row_loop.h"
+#include "raster/triangle_list_parts.h"
 #include "raster/wide/kernels.h"
 #include "triangles.h"
 
@@ -31,6 +32,60 @@ TEST(Bands, NextIsTheFirstBandAtOrAfterThatTheThreadOwns) {
         EXPECT_EQ(bands.owns(b), b % count == mine);
       }
     }
+}
+
+// The list's vertices mapped to the window a vector at a time (map_list_wide) on every vector
+// target: map_one's bits, snapped positions and x, y, z, w, for random clip positions inside and
+// outside each plane, with w tiny, huge, zero or negative, NaN and infinite coordinates, and
+// positions whose snapped coordinates leave 32 bits, under random viewports and depth ranges.
+TEST(MapListVertices, GiveMapOnesBitsOnEveryTarget) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1, 1);
+  const float specials[] = {0.0f, -0.0f, 1e-40f, 0x1p-127f, 0x1p127f, 1e30f, -1e30f, INFINITY, -INFINITY, NAN};
+  constexpr size_t kCount = 4099;  // not a whole number of vectors
+  std::vector<glm::vec4> clip(kCount);
+  for (size_t i = 0; i < kCount; ++i) {
+    const float w = 0.1f + 3 * std::abs(u(rng));
+    glm::vec4 c{u(rng) * 1.3f * w, u(rng) * 1.3f * w, u(rng) * 1.3f * w, w};
+    if (i % 7 == 3) c[int(i / 7 % 4)] = specials[i / 3 % std::size(specials)];
+    if (i % 11 == 5) c *= 1e7f;  // far out, still inside where |x| <= w: snapped beyond 2^29
+    if (i % 13 == 1) c.w = -c.w;
+    clip[i] = c;
+  }
+  for (int round = 0; round < 20; ++round) {
+    raster::State s;
+    s.fb_height = 64 + int(rng() % 2000);
+    s.viewport = {int(rng() % 200) - 100, int(rng() % 200) - 100, 1 + int(rng() % 4000), 1 + int(rng() % 4000)};
+    s.depth_range = {std::abs(u(rng)), std::abs(u(rng))};
+    const auto fresh = [&] {
+      raster::ListVertices vs;
+      vs.resize(kCount, false, false);
+      vs.clip = clip;
+      return vs;
+    };
+    raster::ListVertices want = fresh();
+    for (size_t i = 0; i < kCount; ++i) raster::detail::map_one(want, i, s);
+    size_t mapped = 0;
+    for (const raster::Snapped& p : want.snapped) mapped += p.x != raster::kNotMapped;
+    EXPECT_GT(mapped, kCount / 3);
+    EXPECT_LT(mapped, kCount);
+    for (const std::string& target : vector_targets()) {
+      const OnTarget on(target);
+      for (const size_t first : {size_t(0), size_t(3)}) {
+        raster::ListVertices got = fresh();
+        raster::map_list_vertices(got, first, kCount - first, s);
+        for (size_t i = first; i < kCount; ++i) {
+          ASSERT_EQ(got.snapped[i].x, want.snapped[i].x) << target << ", vertex " << i << ", round " << round;
+          if (want.snapped[i].x == raster::kNotMapped) {
+            ASSERT_EQ(std::memcmp(&got.hot[i].w, &want.hot[i].w, 4), 0) << target << ", vertex " << i;
+            continue;
+          }
+          ASSERT_EQ(got.snapped[i].y, want.snapped[i].y) << target << ", vertex " << i << ", round " << round;
+          ASSERT_EQ(std::memcmp(&got.hot[i].x, &want.hot[i].x, 16), 0) << target << ", vertex " << i << ", round " << round;
+        }
+      }
+    }
+  }
 }
 
 class BoxKernel : public ::testing::TestWithParam<GLenum> {

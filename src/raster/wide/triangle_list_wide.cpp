@@ -9,6 +9,7 @@
 #include <hwy/highway.h>
 
 #include <climits>
+#include <cstring>
 
 #include "raster/triangle_list_parts.h"
 #include "raster/wide/kernels-inl.h"
@@ -181,6 +182,62 @@ size_t BinWide(const List& l, size_t first, size_t last, int units, uint32_t** o
 #endif
 }
 
+// map_one a vector of vertices at a time (lanes are vertices): outside_planes and map_float's
+// operations in the same order, the products and sums in float, the multiply-adds fused. A vector
+// with a lane map_one would find too far out (|snapped| from 2^29, or NaN: beyond the range the
+// conversion rounds in) is left to map_one, lane by lane.
+size_t MapListWide(ListVertices& vs, size_t first, size_t end, const State& s) {
+#if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
+  (void)vs, (void)end, (void)s;
+  return first;
+#else
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  using VF = hn::Vec<decltype(df)>;
+  const size_t n = hn::Lanes(df);
+  const glm::ivec4 vp = s.viewport;
+  const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f, fbh = float(s.fb_height);
+  const float near = float(s.depth_range.x), far = float(s.depth_range.y);
+  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), half = hn::Set(df, 0.5f), k256 = hn::Set(df, 256.0f);
+  const VF x_scale = hn::Set(df, hw), x_add = hn::Set(df, float(vp[0]) + hw);
+  const VF y_scale = hn::Set(df, -hh), y_add = hn::Set(df, fbh - (float(vp[1]) + hh));
+  const VF z_scale = hn::Set(df, (far - near) * 0.5f), z_add = hn::Set(df, (far + near) * 0.5f);
+  const VF limit = hn::Set(df, 0x1p29f), tiny = hn::Set(df, 0x1p-126f), huge = hn::Set(df, 0x1p126f);
+  const auto k128 = hn::Set(di, 128), top = hn::Set(di, (s.fb_height - 1) * 256 + 128);
+  const auto not_mapped = hn::Set(di, kNotMapped), zero_i = hn::Zero(di);
+  alignas(64) float window[4 * kMaxLanes32];  // x, y, z, w a vertex, for the 32-byte records
+  size_t i = first;
+  for (; i + n <= end; i += n) {
+    VF X, Y, Z, W;
+    hn::LoadInterleaved4(df, &vs.clip[i].x, X, Y, Z, W);
+    const VF neg_w = hn::Sub(zero, W);
+    auto out = hn::Or(hn::Or(hn::Gt(X, W), hn::Lt(X, neg_w)), hn::Or(hn::Gt(Y, W), hn::Lt(Y, neg_w)));
+    out = hn::Or(out, hn::Or(hn::Gt(Z, W), hn::Lt(Z, neg_w)));
+    // A NaN or an infinity anywhere: x * 0 is NaN then.
+    out = hn::Or(out, hn::IsNaN(hn::Add(hn::Add(hn::Mul(X, zero), hn::Mul(Y, zero)), hn::Add(hn::Mul(Z, zero), hn::Mul(W, zero)))));
+    const VF aw = hn::Abs(W);
+    out = hn::Or(out, hn::Or(hn::Le(W, zero), hn::Or(hn::Lt(aw, tiny), hn::Gt(aw, huge))));
+    const VF inv_w = hn::Div(one, W);
+    const VF x = FusedMulAdd(df, hn::Mul(X, inv_w), x_scale, x_add);
+    const VF y_down = FusedMulAdd(df, hn::Mul(Y, inv_w), y_scale, y_add);
+    const VF z = FusedMulAdd(df, hn::Mul(Z, inv_w), z_scale, z_add);
+    const VF sxf = hn::Mul(hn::Sub(x, half), k256), syf = hn::Mul(hn::Sub(y_down, half), k256);
+    const auto beyond = hn::Or(hn::Not(hn::Lt(hn::Abs(sxf), limit)), hn::Not(hn::Lt(hn::Abs(syf), limit)));
+    if (!hn::AllFalse(df, hn::AndNot(out, beyond))) {
+      for (size_t k = i; k < i + n; ++k) map_one(vs, k, s);
+      continue;
+    }
+    const auto out_i = hn::RebindMask(di, out);
+    const auto sx = hn::IfThenElse(out_i, not_mapped, hn::Add(hn::NearestInt(sxf), k128));
+    const auto sy = hn::IfThenElse(out_i, zero_i, hn::Sub(top, hn::NearestInt(syf)));
+    hn::StoreInterleaved2(sx, sy, di, &vs.snapped[i].x);
+    hn::StoreInterleaved4(x, y_down, z, W, df, window);
+    for (size_t k = 0; k < n; ++k) std::memcpy(&vs.hot[i + k].x, window + 4 * k, 4 * sizeof(float));
+  }
+  return i;
+#endif
+}
+
 }  // namespace ffc::raster::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -189,6 +246,11 @@ namespace ffc::raster::detail {
 
 HWY_EXPORT(DrawBinsWide);
 HWY_EXPORT(BinWide);
+HWY_EXPORT(MapListWide);
+
+size_t map_list_wide(ListVertices& vs, size_t first, size_t end, const State& s) {
+  return HWY_DYNAMIC_DISPATCH(MapListWide)(vs, first, end, s);
+}
 
 void draw_bins_wide(DepthMode mode, const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
   HWY_DYNAMIC_DISPATCH(DrawBinsWide)(mode, l, mine, in, counts, shares);
