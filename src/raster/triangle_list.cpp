@@ -97,9 +97,14 @@ bool map_four(ListVertices& vs, size_t i, const State& s) {
 
 }  // namespace
 
-void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s) {
+void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s, const float* const* front) {
   size_t i = first;
-  if (detail::wide_kernels()) i = detail::map_list_wide(vs, first, first + count, s);
+  if (detail::wide_kernels()) i = detail::map_list_wide(vs, first, first + count, s, front);
+  if (front)  // those the vectors left
+    for (size_t k = i; k < first + count; ++k) {
+      const size_t j = k - first;
+      vs.hot[k].color = {front[0][j], front[1][j], front[2][j], front[3][j]};
+    }
 #if FFCOMPAT_X86
   static const bool fma = __builtin_cpu_supports("fma");
   for (; i + 4 <= first + count; i += 4)

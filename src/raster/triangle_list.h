@@ -56,8 +56,9 @@ struct ListVertices {
 };
 
 // Vertices [first, first + count): window and snapped positions from their clip coordinates
-// (vs.clip); the colours are the caller's.
-void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s);
+// (vs.clip). `front`: columns of their front colours (r, g, b, a; vertex first + j at [j]),
+// written into the records with the positions; null: the colours are the caller's.
+void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State& s, const float* const* front = nullptr);
 
 // The binned triangles of a draw, kept between draws so that steady state allocates nothing.
 struct TriangleBins {

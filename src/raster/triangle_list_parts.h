@@ -121,9 +121,10 @@ inline void for_each_binned(const List& l, const Bands& mine, const uint32_t* co
 // (outside_planes, or too far out for 32-bit coordinates), and x, y, z and w for setup.
 void map_one(ListVertices& vs, size_t i, const State& s);
 // map_one for vertices [first, end) a vector at a time on the dispatched target, with the same
-// bits (the fused multiply-adds fused on every target); returns the first vertex it left (fewer
-// than a vector, or all where the target has no vectors). Where wide_kernels().
-size_t map_list_wide(ListVertices& vs, size_t first, size_t end, const State& s);
+// bits (the fused multiply-adds fused on every target), and the front colours from their columns
+// where `front` is given (map_list_vertices); returns the first vertex it left (fewer than a
+// vector, or all where the target has no vectors). Where wide_kernels().
+size_t map_list_wide(ListVertices& vs, size_t first, size_t end, const State& s, const float* const* front);
 
 // The list's draw loop (triangle_list.cpp's draw_bins) on the dispatched Highway target, its
 // kernels inline (wide/triangle_list_wide.cpp); where wide_kernels().

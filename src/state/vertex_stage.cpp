@@ -498,18 +498,17 @@ void Context::stage_list_part(const Fetch& fetch, GLint first, GLint lo, GLint h
     const int m = int(std::min<GLint>(kBatch, hi - b));
     const size_t o0 = at + size_t(b - first);
     stage.run(fetch, b, m, s, zero, &out.clip[o0]);  // straight to the list
-    for (int j = 0; j < m; ++j) {
-      const size_t o = o0 + size_t(j);
-      if (!lighting_) {
-        out.hot[o].color = glm::vec4(s.unlit[j]);
-        continue;
+    if (!lighting_)
+      for (int j = 0; j < m; ++j) out.hot[o0 + size_t(j)].color = glm::vec4(s.unlit[j]);
+    else if (back || front_sec || back_sec)
+      for (int j = 0; j < m; ++j) {
+        const size_t o = o0 + size_t(j);
+        if (back) out.back[o] = s.colour(1, j);
+        if (front_sec) out.front_sec[o] = s.colour(2, j);
+        if (back_sec) out.back_sec[o] = s.colour(3, j);
       }
-      out.hot[o].color = s.colour(0, j);
-      if (back) out.back[o] = s.colour(1, j);
-      if (front_sec) out.front_sec[o] = s.colour(2, j);
-      if (back_sec) out.back_sec[o] = s.colour(3, j);
-    }
-    raster::map_list_vertices(out, o0, size_t(m), rs);
+    // The front colours from their columns, with the positions (a vector at a time).
+    raster::map_list_vertices(out, o0, size_t(m), rs, lighting_ ? &s.view[0] : nullptr);
   }
 }
 

@@ -35,7 +35,8 @@ TEST(Bands, NextIsTheFirstBandAtOrAfterThatTheThreadOwns) {
 }
 
 // The list's vertices mapped to the window a vector at a time (map_list_wide) on every vector
-// target: map_one's bits, snapped positions and x, y, z, w, for random clip positions inside and
+// target: map_one's bits, snapped positions and x, y, z, w (and the front colours given as
+// columns, each vertex its own), for random clip positions inside and
 // outside each plane, with w tiny, huge, zero or negative, NaN and infinite coordinates, and
 // positions whose snapped coordinates leave 32 bits, under random viewports and depth ranges.
 TEST(MapListVertices, GiveMapOnesBitsOnEveryTarget) {
@@ -73,8 +74,16 @@ TEST(MapListVertices, GiveMapOnesBitsOnEveryTarget) {
       const OnTarget on(target);
       for (const size_t first : {size_t(0), size_t(3)}) {
         raster::ListVertices got = fresh();
-        raster::map_list_vertices(got, first, kCount - first, s);
+        // With the front colours from columns on every other round: each vertex's own.
+        const bool colours = round % 2;
+        std::vector<float> columns[4];
+        for (int k = 0; k < 4; ++k)
+          for (size_t i = first; i < kCount; ++i) columns[k].push_back(float(i) + 0.25f * float(k));
+        const float* const front[4] = {columns[0].data(), columns[1].data(), columns[2].data(), columns[3].data()};
+        raster::map_list_vertices(got, first, kCount - first, s, colours ? front : nullptr);
         for (size_t i = first; i < kCount; ++i) {
+          if (colours) ASSERT_EQ(got.hot[i].color, glm::vec4(float(i), float(i) + 0.25f, float(i) + 0.5f, float(i) + 0.75f)) << target << ", vertex " << i;
+          else ASSERT_EQ(got.hot[i].color, glm::vec4(0)) << target << ", vertex " << i;
           ASSERT_EQ(got.snapped[i].x, want.snapped[i].x) << target << ", vertex " << i << ", round " << round;
           if (want.snapped[i].x == raster::kNotMapped) {
             ASSERT_EQ(std::memcmp(&got.hot[i].w, &want.hot[i].w, 4), 0) << target << ", vertex " << i;

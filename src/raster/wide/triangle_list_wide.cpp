@@ -186,9 +186,9 @@ size_t BinWide(const List& l, size_t first, size_t last, int units, uint32_t** o
 // operations in the same order, the products and sums in float, the multiply-adds fused. A vector
 // with a lane map_one would find too far out (|snapped| from 2^29, or NaN: beyond the range the
 // conversion rounds in) is left to map_one, lane by lane.
-size_t MapListWide(ListVertices& vs, size_t first, size_t end, const State& s) {
+size_t MapListWide(ListVertices& vs, size_t first, size_t end, const State& s, const float* const* front) {
 #if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
-  (void)vs, (void)end, (void)s;
+  (void)vs, (void)end, (void)s, (void)front;
   return first;
 #else
   const hn::ScalableTag<float> df;
@@ -205,9 +205,15 @@ size_t MapListWide(ListVertices& vs, size_t first, size_t end, const State& s) {
   const VF limit = hn::Set(df, 0x1p29f), tiny = hn::Set(df, 0x1p-126f), huge = hn::Set(df, 0x1p126f);
   const auto k128 = hn::Set(di, 128), top = hn::Set(di, (s.fb_height - 1) * 256 + 128);
   const auto not_mapped = hn::Set(di, kNotMapped), zero_i = hn::Zero(di);
-  alignas(64) float window[4 * kMaxLanes32];  // x, y, z, w a vertex, for the 32-byte records
+  alignas(64) float window[4 * kMaxLanes32], colour[4 * kMaxLanes32];  // a vertex's x, y, z, w and r, g, b, a
   size_t i = first;
   for (; i + n <= end; i += n) {
+    if (front) {  // the front colours, interleaved for the 32-byte records
+      const size_t j = i - first;
+      hn::StoreInterleaved4(hn::LoadU(df, front[0] + j), hn::LoadU(df, front[1] + j), hn::LoadU(df, front[2] + j),
+                            hn::LoadU(df, front[3] + j), df, colour);
+      for (size_t k = 0; k < n; ++k) std::memcpy(&vs.hot[i + k].color, colour + 4 * k, 4 * sizeof(float));
+    }
     VF X, Y, Z, W;
     hn::LoadInterleaved4(df, &vs.clip[i].x, X, Y, Z, W);
     const VF neg_w = hn::Sub(zero, W);
@@ -248,8 +254,8 @@ HWY_EXPORT(DrawBinsWide);
 HWY_EXPORT(BinWide);
 HWY_EXPORT(MapListWide);
 
-size_t map_list_wide(ListVertices& vs, size_t first, size_t end, const State& s) {
-  return HWY_DYNAMIC_DISPATCH(MapListWide)(vs, first, end, s);
+size_t map_list_wide(ListVertices& vs, size_t first, size_t end, const State& s, const float* const* front) {
+  return HWY_DYNAMIC_DISPATCH(MapListWide)(vs, first, end, s, front);
 }
 
 void draw_bins_wide(DepthMode mode, const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
