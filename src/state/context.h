@@ -523,6 +523,12 @@ class Context {
   // GL_COMPILE_AND_EXECUTE list leaves Mesa inside a glBegin (display_list.cpp, Context::hold_back).
   glm::dvec3 mesa_normal_{0, 0, 1};
   glm::dvec4 mesa_color_{1, 1, 1, 1};
+  // Mesa's ctx->Light.Material, kept as mesa_normal_ is: its vbo's material values and the colour
+  // material tracking reach it only where the current values are copied (copy_pending), and
+  // glEnable(GL_COLOR_MATERIAL), glColorMaterial and glPopAttrib write it directly. glGetMaterial
+  // reads it while a list's wrap leaves Mesa's executing side inside the glBegin (ListState::shown).
+  lighting::MaterialParams mesa_materials_[2];
+  void note_materials_flushed() { mesa_materials_[0] = materials_[0], mesa_materials_[1] = materials_[1]; }
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal

@@ -367,6 +367,11 @@ void Context::NewList(GLuint list, GLenum mode) {
   // arguments (measured: glNewList(0, GL_CURRENT_NORMAL) then is GL_INVALID_OPERATION).
   if (lists_.mode != 0) return error(GL_INVALID_OPERATION);
   if (!outside_begin_end()) return;
+  // Mesa's glNewList copies the pending current values (FLUSH_CURRENT), a glMaterial's and a colour
+  // tracked by colour material included: measured, a GL_COMPILE_AND_EXECUTE list's wrap then shows
+  // them (mesa_color_, mesa_materials_; repro list_new_list_copies_current.txt). Before the
+  // arguments are checked here; not measured where they are refused.
+  flush_current();
   if (list == 0) return error(GL_INVALID_VALUE);
   if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return error(GL_INVALID_ENUM);
   lists_.index = list;
@@ -420,6 +425,7 @@ void Context::end_list_calls() {
   // pending ones are in its vbo's format. The colour reaches the state (and a tracked material) at
   // soft's next flush, as Mesa's does.
   mesa_normal_ = normal_, mesa_color_ = color_;
+  note_materials_flushed();
   if (lists_.pending & 1) normal_ = lists_.pending_normal;
   if (lists_.pending & 2) color_ = lists_.pending_color;
   lists_.calling = lists_.mesa_inside = false, lists_.pending = 0;

@@ -238,6 +238,7 @@ void Context::update_color_material() {
     }
   }
   constants_dirty_ = true;
+  note_materials_flushed();  // written directly (or by a copy: copy_pending)
 }
 
 void Context::copy_pending() {
@@ -247,6 +248,7 @@ void Context::copy_pending() {
   for (const PendingMaterial& p : pending_materials_)
     if (*p.dst != p.value) *p.dst = p.value, constants_dirty_ = true;
   if (color_changed) update_color_material();
+  note_materials_flushed();
 }
 
 // Mesa's FLUSH_CURRENT copies the values set since the last flush and keeps them in its vbo format;
@@ -296,7 +298,9 @@ void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
   // FLUSH_VERTICES, then FLUSH_CURRENT: copied, kept in the format until the next flush of stored vertices
   if (!in_begin_) outside_begin_end(), flush_current();
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
-  const lighting::MaterialParams& m = materials_[face == GL_BACK];
+  // Inside a list's wrapped primitive Mesa answers from its materials as the last copy left them
+  // (mesa_materials_): a glMaterial or a colour tracked by colour material since then is in its vbo.
+  const lighting::MaterialParams& m = (lists_.shown ? mesa_materials_ : materials_)[face == GL_BACK];
   glm::dvec4 v;
   switch (pname) {
     case GL_AMBIENT: v = m.ambient; break;
