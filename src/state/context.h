@@ -277,6 +277,7 @@ class Context {
   void split_list_node(int joining = 0);           // ... and its open primitive goes on in the next (a wrap)
   void note_vertexless_node();  // a vertex list ends: one with attributes and no vertex (kListVertexlessNode)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
+  void note_node_mode(GLenum mode, int vertices);  // a primitive's vertices in the open vertex list (kListModesFedBackFirst)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies
                                         // nothing, a closed line loop (loop: the attributes) replays its first vertex
