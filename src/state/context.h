@@ -557,6 +557,7 @@ class Context {
     glm::dvec4 value;
   };
   std::vector<PendingMaterial> pending_materials_;  // glMaterial values copied again at each flush
+  bool material_in_format_ = false;  // a glMaterial outside glBegin since the format's reset, shininess too (mesa_materials_)
   ClientArray vertex_array_{false, 4, GL_FLOAT, 0, nullptr}, normal_array_{false, 3, GL_FLOAT, 0, nullptr},
       color_array_{false, 4, GL_FLOAT, 0, nullptr};
 

@@ -153,7 +153,7 @@ void Context::flush_stored_keeping_format(bool begin) {
   // attributes and no position.
   const bool copies = begin && !format_has_position_ && (color_size_ > 0 || normal_in_format_);
   // (its materials too where the format holds a glMaterial's: mesa_materials_)
-  const bool copies_materials = copies || (begin && !format_has_position_ && !pending_materials_.empty());
+  const bool copies_materials = copies || (begin && !format_has_position_ && material_in_format_);
   const glm::dvec3 mesa_normal = mesa_normal_;
   const glm::dvec4 mesa_color = mesa_color_;
   const lighting::MaterialParams mesa_front = mesa_materials_[0], mesa_back = mesa_materials_[1];

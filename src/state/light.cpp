@@ -147,6 +147,7 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
       if (tracks) return;
       dst = c;
       if (in_begin_ || spec_) return;
+      material_in_format_ = true;
       for (PendingMaterial& p : pending_materials_)
         if (p.dst == &dst) return void(p.value = c);
       pending_materials_.push_back({&dst, c});
@@ -157,7 +158,7 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
       case GL_SPECULAR: set(m.specular, GL_SPECULAR); break;
       case GL_EMISSION: set(m.emission, GL_EMISSION); break;
       case GL_AMBIENT_AND_DIFFUSE: set(m.ambient, GL_AMBIENT), set(m.diffuse, GL_DIFFUSE); break;
-      case GL_SHININESS: m.shininess = v[0]; break;
+      case GL_SHININESS: m.shininess = v[0], material_in_format_ |= !in_begin_ && !spec_; break;
       case GL_COLOR_INDEXES: color_indexes_[f] = glm::dvec3(v[0], v[1], v[2]); break;
     }
   }
@@ -268,7 +269,7 @@ void Context::flush_current() {
 void Context::flush_stored() {
   if (spec_) return;
   copy_pending();
-  pending_materials_.clear();
+  pending_materials_.clear(), material_in_format_ = false;
   color_size_ = color_active_ = 0, normal_in_format_ = false;  // the vbo's vertex format is reset
   format_has_position_ = false;
 }
