@@ -322,6 +322,7 @@ const std::vector<KnownDeviation>& known_deviations() {
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
       drawn("mesa-list-incomplete-fed-back", state::kListIncompleteFedBack),  // row 66
       drawn("mesa-list-padded-quad-drawn", state::kListPaddedQuadDrawn),      // row 70
+      drawn("mesa-list-modes-fed-back-first", state::kListModesFedBackFirst),  // row 72
       // Row 71: heap corruption compiling a vertex list (Context::note_node_primitive); glibc aborts at
       // that flush or at any later call, the read-back included.
       {"mesa-list-two-then-quad-crash", state::kListTwoThenQuadCrash,

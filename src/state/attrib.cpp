@@ -143,6 +143,7 @@ void Context::PopAttrib() {
     cm_face_ = e->cm_face, cm_mode_ = e->cm_mode;
     for (int i = 0; i < 8; ++i) lights_[i] = e->lights[i];
     materials_[0] = e->materials[0], materials_[1] = e->materials[1];
+    note_materials_flushed();  // Mesa's pop writes its materials directly
     color_indexes_[0] = e->color_indexes[0], color_indexes_[1] = e->color_indexes[1];
     model_ = e->model;
   }

@@ -283,6 +283,7 @@ class Context {
   void split_list_node(int joining = 0);           // ... and its open primitive goes on in the next (a wrap)
   void note_vertexless_node();  // a vertex list ends: one with attributes and no vertex (kListVertexlessNode)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
+  void note_node_mode(GLenum mode, int vertices);  // a primitive's vertices in the open vertex list (kListModesFedBackFirst)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies
                                         // nothing, a closed line loop (loop: the attributes) replays its first vertex
@@ -529,6 +530,12 @@ class Context {
   // GL_COMPILE_AND_EXECUTE list leaves Mesa inside a glBegin (display_list.cpp, Context::hold_back).
   glm::dvec3 mesa_normal_{0, 0, 1};
   glm::dvec4 mesa_color_{1, 1, 1, 1};
+  // Mesa's ctx->Light.Material, kept as mesa_normal_ is: its vbo's material values and the colour
+  // material tracking reach it only where the current values are copied (copy_pending), and
+  // glEnable(GL_COLOR_MATERIAL), glColorMaterial and glPopAttrib write it directly. glGetMaterial
+  // reads it while a list's wrap leaves Mesa's executing side inside the glBegin (ListState::shown).
+  lighting::MaterialParams mesa_materials_[2];
+  void note_materials_flushed() { mesa_materials_[0] = materials_[0], mesa_materials_[1] = materials_[1]; }
   bool color_varies_ = false;             // this draw's colour comes per vertex
   int color_size_ = 0, color_active_ = 0;  // Mesa's vbo colour attribute: its size and active size
   bool normal_in_format_ = false;          // Mesa's vbo format holds the normal
@@ -556,6 +563,7 @@ class Context {
     glm::dvec4 value;
   };
   std::vector<PendingMaterial> pending_materials_;  // glMaterial values copied again at each flush
+  bool material_in_format_ = false;  // a glMaterial outside glBegin since the format's reset, shininess too (mesa_materials_)
   ClientArray vertex_array_{false, 4, GL_FLOAT, 0, nullptr}, normal_array_{false, 3, GL_FLOAT, 0, nullptr},
       color_array_{false, 4, GL_FLOAT, 0, nullptr};
 

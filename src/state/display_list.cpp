@@ -304,6 +304,7 @@ void Context::hold_back(int kind, int size) {
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
     if (lists_.vertices > 0) lists_.compiling.note_primitive(lists_.open_mode, lists_.vertices);
+    if (lists_.open) note_node_mode(lists_.open_mode, lists_.vertices + lists_.wrap_copies);
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
     if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
     split_list_node(kind > 0 ? kind & 3 : 0);  // the vertex list before the wrap is compiled first, then marked
@@ -367,6 +368,11 @@ void Context::NewList(GLuint list, GLenum mode) {
   // arguments (measured: glNewList(0, GL_CURRENT_NORMAL) then is GL_INVALID_OPERATION).
   if (lists_.mode != 0) return error(GL_INVALID_OPERATION);
   if (!outside_begin_end()) return;
+  // Mesa's glNewList copies the pending current values (FLUSH_CURRENT), a glMaterial's and a colour
+  // tracked by colour material included: measured, a GL_COMPILE_AND_EXECUTE list's wrap then shows
+  // them (mesa_color_, mesa_materials_; repro list_new_list_copies_current.txt). Before the
+  // arguments are checked here; not measured where they are refused.
+  flush_current();
   if (list == 0) return error(GL_INVALID_VALUE);
   if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return error(GL_INVALID_ENUM);
   lists_.index = list;
@@ -377,7 +383,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = lists_.fallback = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
-  lists_.shade_model = 0;
+  lists_.shade_model = 0, lists_.node_first_mode = 0;
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
@@ -420,6 +426,7 @@ void Context::end_list_calls() {
   // pending ones are in its vbo's format. The colour reaches the state (and a tracked material) at
   // soft's next flush, as Mesa's does.
   mesa_normal_ = normal_, mesa_color_ = color_;
+  note_materials_flushed();
   if (lists_.pending & 1) normal_ = lists_.pending_normal;
   if (lists_.pending & 2) color_ = lists_.pending_color;
   lists_.calling = lists_.mesa_inside = false, lists_.pending = 0;
@@ -442,6 +449,7 @@ void Context::call_one_list(GLuint list) {
   if (it->second.padded_quad && render_mode_ == GL_RENDER) deviations_.insert(kListPaddedQuadDrawn);
   if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
   if (it->second.vertexless && !it->second.loopback) deviations_.insert(kListVertexlessNode);
+  if (it->second.mixed_modes && !it->second.loopback && render_mode_ != GL_RENDER) deviations_.insert(kListModesFedBackFirst);
   const bool outer = lists_.replaying_loopback;
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
@@ -574,6 +582,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   }
   lists_.compiling_draw = false;
   if (&l == &lists_.compiling) l.note_primitive(mode, vertex_array_.enabled ? int(count) : 0);
+  if (format) note_node_mode(mode, lists_.vertices + lists_.wrap_copies);
   if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
@@ -619,6 +628,27 @@ void Context::note_node_primitive(bool open) {
       lists_.open_mode == GL_QUADS && count == 1)
     deviations_.insert(kListTwoThenQuadCrash);
   if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count;
+  note_node_mode(lists_.open_mode, count);
+}
+
+// Measured (repro list_modes_fed_back_first.txt): a GL_COMPILE list holding GL_LINES of two vertices
+// then GL_TRIANGLES of three, called in GL_FEEDBACK, feeds back the line alone (glRenderMode returns 5
+// where GL says 13); two lines then two triangles, the lines; in GL_SELECT a triangle on screen after
+// a line off it makes no hit. Mesa's compiler merges a vertex list's primitives of one mode into one
+// draw (a GL_LINE_STRIP next to lines becomes lines, a primitive without a vertex is dropped) and,
+// where the merged draws have more than one mode, its playback calls the driver's DrawGalliumMultiMode
+// (vbo_save_draw.c), which in feedback and selection runs the draw module once per mode with one
+// pipe_draw_info: only the first mode's draws are fed back, and with a second change of mode glCallList
+// crashes (row 66). The playback saves and restores the info's index buffer (info->index.gl_bo) around
+// that call, as the draws replace it; which line of 22.3 drops the later draws was not found. Not
+// there: a state call between the modes (two vertex lists), a list replayed through immediate mode,
+// GL_COMPILE_AND_EXECUTE's own drawing, GL_RENDER. Named (row 72, a bug no program relies on): soft
+// feeds back every primitive.
+void Context::note_node_mode(GLenum mode, int vertices) {
+  if (vertices <= 0) return;
+  const GLenum family = mode == GL_LINE_STRIP ? GLenum(GL_LINES) : mode;
+  if (lists_.node_first_mode == 0) lists_.node_first_mode = family;
+  else if (lists_.node_first_mode != family) lists_.compiling.mixed_modes = true;
 }
 
 // Measured by the seed-8086 helper (repro list_vertexless_wrap_current.txt, seed 2026 stream 972):
@@ -639,7 +669,7 @@ void Context::note_vertexless_node() {
 void Context::end_list_node() {
   lists_.carry = 0;  // the flush empties the store's format (list_vertex_compiled)
   if (lists_.open) note_node_primitive(true);
-  lists_.node_last_mode = 0;
+  lists_.node_last_mode = lists_.node_first_mode = 0;
   note_vertexless_node();
   if (lists_.node_open)
     lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
@@ -686,7 +716,7 @@ void Context::close_store() {
 // stream 701 shrunk), so nothing is put back in the middle of the primitive; one from glBegin copies
 // its values so far, the start of the next.
 void Context::split_list_node(int joining) {
-  lists_.node_last_mode = 0;  // the open primitive's rest starts the next vertex list
+  lists_.node_last_mode = lists_.node_first_mode = 0;  // the open primitive's rest starts the next vertex list
   // Whether the vertex list before the wrap copies its last vertex to the current values (an attribute
   // besides the position in its format, its last primitive from glBegin), and so leaves Mesa inside
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).

@@ -60,6 +60,13 @@ inline constexpr const char* kListIncompleteFedBack =
     "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
     "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
 
+// Row 72 (docs/deviations.md): named, not modelled (Context::note_node_mode).
+inline constexpr const char* kListModesFedBackFirst =
+    "a display list's vertex list whose primitives (glBegin/glEnd or compiled draws, no state call between them) "
+    "have more than one mode, called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back (or hits) only "
+    "the primitives of its first mode, and crashes in glCallList where the mode changes twice; soft feeds back "
+    "them all";
+
 // Row 67 (docs/deviations.md): named, not modelled.
 inline constexpr const char* kListLoopbackDeduplicated =
     "a display list replayed through immediate mode (a glBegin left open at glEndList, a wrap copying vertices "
@@ -118,7 +125,7 @@ class DisplayList {
   void replay() const;
   void clear() {
     bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false;
-    vertexless = false, calls.clear();
+    vertexless = false, mixed_modes = false, calls.clear();
   }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   bool padded_quad = false;  // a GL_QUADS or GL_QUAD_STRIP of three vertices (kListPaddedQuadDrawn)
@@ -132,6 +139,7 @@ class DisplayList {
   bool loopback = false;
   bool deduplicated = false;  // a vertex list of it lost repeated vertices, compiled before any loopback mark
   bool vertexless = false;  // a vertex list of it has attributes and no vertex (kListVertexlessNode)
+  bool mixed_modes = false;  // a vertex list of it draws primitives of two modes (kListModesFedBackFirst)
   std::vector<GLuint> calls;  // the names its glCallList and glCallLists compiled (without the list base)
   bool empty() const { return bytes_.empty(); }
 
@@ -216,6 +224,9 @@ struct ListState {
   // it has there (kListTwoThenQuadCrash, Context::note_node_primitive).
   GLenum node_last_mode = 0;
   int node_last_count = 0;
+  // The mode of the open vertex list's first primitive with a vertex (0: none yet), GL_LINE_STRIP
+  // taken as GL_LINES (Context::note_node_mode).
+  GLenum node_first_mode = 0;
   // Compiling: the vertices of the store since it was last compiled, as Mesa's compiler compares them
   // (the bits of the position, normal and colour as floats), whether one repeats, and whether a vertex
   // list with a repeat was compiled before the list was marked for loopback (kListLoopbackDeduplicated).

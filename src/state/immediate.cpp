@@ -152,8 +152,11 @@ void Context::flush_stored_keeping_format(bool begin) {
   // Mesa copies the current values (mesa_normal_) here only at a glBegin whose format holds
   // attributes and no position.
   const bool copies = begin && !format_has_position_ && (color_size_ > 0 || normal_in_format_);
+  // (its materials too where the format holds a glMaterial's: mesa_materials_)
+  const bool copies_materials = copies || (begin && !format_has_position_ && material_in_format_);
   const glm::dvec3 mesa_normal = mesa_normal_;
   const glm::dvec4 mesa_color = mesa_color_;
+  const lighting::MaterialParams mesa_front = mesa_materials_[0], mesa_back = mesa_materials_[1];
   if (!format_has_position_) {
     flush_stored();
   } else {
@@ -163,6 +166,7 @@ void Context::flush_stored_keeping_format(bool begin) {
     color_size_ = size, color_active_ = active, normal_in_format_ = normal, format_has_position_ = true;
   }
   if (!copies) mesa_normal_ = mesa_normal, mesa_color_ = mesa_color;
+  if (!copies_materials) mesa_materials_[0] = mesa_front, mesa_materials_[1] = mesa_back;
 }
 
 // A glVertex outside glBegin/glEnd draws nothing, but the position joins Mesa's vbo vertex format

@@ -147,6 +147,7 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
       if (tracks) return;
       dst = c;
       if (in_begin_ || spec_) return;
+      material_in_format_ = true;
       for (PendingMaterial& p : pending_materials_)
         if (p.dst == &dst) return void(p.value = c);
       pending_materials_.push_back({&dst, c});
@@ -157,7 +158,7 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
       case GL_SPECULAR: set(m.specular, GL_SPECULAR); break;
       case GL_EMISSION: set(m.emission, GL_EMISSION); break;
       case GL_AMBIENT_AND_DIFFUSE: set(m.ambient, GL_AMBIENT), set(m.diffuse, GL_DIFFUSE); break;
-      case GL_SHININESS: m.shininess = v[0]; break;
+      case GL_SHININESS: m.shininess = v[0], material_in_format_ |= !in_begin_ && !spec_; break;
       case GL_COLOR_INDEXES: color_indexes_[f] = glm::dvec3(v[0], v[1], v[2]); break;
     }
   }
@@ -238,6 +239,7 @@ void Context::update_color_material() {
     }
   }
   constants_dirty_ = true;
+  note_materials_flushed();  // written directly (or by a copy: copy_pending)
 }
 
 void Context::copy_pending() {
@@ -247,6 +249,7 @@ void Context::copy_pending() {
   for (const PendingMaterial& p : pending_materials_)
     if (*p.dst != p.value) *p.dst = p.value, constants_dirty_ = true;
   if (color_changed) update_color_material();
+  note_materials_flushed();
 }
 
 // Mesa's FLUSH_CURRENT copies the values set since the last flush and keeps them in its vbo format;
@@ -266,7 +269,7 @@ void Context::flush_current() {
 void Context::flush_stored() {
   if (spec_) return;
   copy_pending();
-  pending_materials_.clear();
+  pending_materials_.clear(), material_in_format_ = false;
   color_size_ = color_active_ = 0, normal_in_format_ = false;  // the vbo's vertex format is reset
   format_has_position_ = false;
 }
@@ -296,7 +299,9 @@ void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
   // FLUSH_VERTICES, then FLUSH_CURRENT: copied, kept in the format until the next flush of stored vertices
   if (!in_begin_) outside_begin_end(), flush_current();
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
-  const lighting::MaterialParams& m = materials_[face == GL_BACK];
+  // Inside a list's wrapped primitive Mesa answers from its materials as the last copy left them
+  // (mesa_materials_): a glMaterial or a colour tracked by colour material since then is in its vbo.
+  const lighting::MaterialParams& m = (lists_.shown ? mesa_materials_ : materials_)[face == GL_BACK];
   glm::dvec4 v;
   switch (pname) {
     case GL_AMBIENT: v = m.ambient; break;
