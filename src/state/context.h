@@ -143,10 +143,6 @@ class Context {
     return true;
   }
   // A recent distinct corner of a glDrawArrays soup (soup.cpp): its floats' bits and its place.
-  struct SoupSlot {
-    uint32_t key[12];
-    uint32_t id, generation, pad[2];
-  };
   // Only once the format holds a position at least `size` wide: a position growing mid-primitive
   // wraps Mesa's vbo (position_size), which the full call does.
   bool store_vertex(float x, float y, float z, float w, int size) {
@@ -706,7 +702,7 @@ class Context {
   // glDrawArrays(GL_TRIANGLES) of a soup (soup.cpp): its repeated corners lit once, drawn from
   // indices. False: not taken (small, or arrays the stage does not read as floats).
   bool draw_soup(GLint first, GLsizei count);
-  std::vector<SoupSlot> soup_slots_;  // a cache per share
+  std::vector<uint64_t> soup_slots_;  // a cache per share (state/soup.cpp lays out its slots)
   uint32_t soup_generation_ = 0;
   std::vector<uint32_t> soup_index_;                // per corner: its distinct corner
   std::vector<float> soup_staged_, soup_compact_;  // the distinct corners, per share and laid out

@@ -22,12 +22,18 @@ namespace {
 
 constexpr GLsizei kSoupMin = 192;          // below this the lighting saved costs less than the cache
 constexpr GLsizei kSoupParallel = 8192;    // below this one thread finds the repeats
-constexpr int kSoupSlotBits = 10;          // per share: 64 KiB
+constexpr int kSoupSlotBits = 10;          // per share: 32 KiB for a position and a normal
 
 constexpr uint64_t kOdd[11] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull,
                                0xD6E8FEB86659FD93ull, 0xFF51AFD7ED558CCDull, 0xC4CEB9FE1A85EC53ull,
                                0x94D049BB133111EBull, 0xBF58476D1CE4E5B9ull, 0x2545F4914F6CDD1Dull,
                                0x9FB21C651E98DF25ull, 0xD1B54A32D192ED03ull};
+
+// A slot of the cache: the corner's R words in pairs (the last one's high half 0 for an odd R),
+// then the generation that wrote it (high half) and its distinct number (low); 32 bytes where
+// that fits (a position and a normal: the table stays in L1), else 64.
+constexpr int pairs(int r) { return (r + 1) / 2; }
+constexpr int slot_pairs(int r) { return pairs(r) + 1 <= 4 ? 4 : 8; }
 
 // An array read as floats: element i at base + stride * i.
 struct Source {
@@ -40,38 +46,42 @@ Source source(const ClientArray& a) {
 
 // Corners [lo, hi) of the draw (element first + c): each one's distinct corner into index[c],
 // numbered from 0, the new ones' floats staged in order; returns how many. The record's layout
-// is fixed per instance (VN position, NN normal, CN colour floats): the key's words stay in
-// registers, each loaded as the 4 bytes it is (words copied through memory in other sizes stall
-// on store forwarding).
+// is fixed per instance (VN position, NN normal, CN colour floats): the key stays in registers,
+// its words loaded as the 4 bytes they are (words copied through memory in other sizes stall on
+// store forwarding) and paired into 64-bit halves, hashed, compared and stored a pair at a time
+// (six products a corner had been the loop's cost).
 template <int VN, int NN, int CN>
-uint32_t find_repeats(const Source (&src)[3], GLint first, size_t lo, size_t hi, Context::SoupSlot* slots,
+uint32_t find_repeats(const Source (&src)[3], GLint first, size_t lo, size_t hi, uint64_t* slots,
                       uint32_t generation, uint32_t* index, float* staged) {
-  constexpr int R = VN + NN + CN;
+  constexpr int R = VN + NN + CN, P = pairs(R), W = slot_pairs(R);
   uint32_t n = 0;
   for (size_t c = lo; c < hi; ++c) {
     const size_t i = size_t(first) + c;
-    uint32_t k[R];
+    uint32_t k[2 * P] = {};
     for (int j = 0; j < VN; ++j) std::memcpy(&k[j], src[0].base + src[0].stride * i + 4 * size_t(j), 4);
     for (int j = 0; j < NN; ++j) std::memcpy(&k[VN + j], src[1].base + src[1].stride * i + 4 * size_t(j), 4);
     for (int j = 0; j < CN; ++j) std::memcpy(&k[VN + NN + j], src[2].base + src[2].stride * i + 4 * size_t(j), 4);
+    uint64_t w[P];
+    for (int p = 0; p < P; ++p) w[p] = k[2 * p] | uint64_t(k[2 * p + 1]) << 32;
     // Independent products summed; the top bits depend on every bit.
     uint64_t h = 0;
-    for (int j = 0; j < R; ++j) h += uint64_t(k[j]) * kOdd[j];
-    Context::SoupSlot& slot = slots[h >> (64 - kSoupSlotBits)];
-    bool same = slot.generation == generation;
-    for (int j = 0; j < R; ++j) same &= slot.key[j] == k[j];
+    for (int p = 0; p < P; ++p) h += w[p] * kOdd[p];
+    uint64_t* slot = slots + (h >> (64 - kSoupSlotBits)) * W;
+    bool same = uint32_t(slot[P] >> 32) == generation;
+    for (int p = 0; p < P; ++p) same &= slot[p] == w[p];
     if (same) {
-      index[c] = slot.id;
+      index[c] = uint32_t(slot[P]);
       continue;
     }
-    for (int j = 0; j < R; ++j) std::memcpy(staged + size_t(n) * R + size_t(j), &k[j], 4), slot.key[j] = k[j];
-    slot.id = n, slot.generation = generation;
+    for (int p = 0; p < P; ++p) slot[p] = w[p];
+    for (int j = 0; j < R; ++j) std::memcpy(staged + size_t(n) * R + size_t(j), &k[j], 4);
+    slot[P] = uint64_t(generation) << 32 | n;
     index[c] = n++;
   }
   return n;
 }
 
-using FindRepeats = uint32_t (*)(const Source (&)[3], GLint, size_t, size_t, Context::SoupSlot*, uint32_t, uint32_t*,
+using FindRepeats = uint32_t (*)(const Source (&)[3], GLint, size_t, size_t, uint64_t*, uint32_t, uint32_t*,
                                  float*);
 template <int VN, int NN>
 FindRepeats with_colour(int cn) {
@@ -103,9 +113,10 @@ bool Context::draw_soup(GLint first, GLsizei count) {
   const size_t corners = size_t(count) / 3 * 3;
   const int shares = count >= kSoupParallel && threads_ > 1 ? workers().size() : 1;
   const size_t table = size_t(1) << kSoupSlotBits;
-  if (soup_slots_.size() < size_t(shares) * table) soup_slots_.assign(size_t(shares) * table, SoupSlot{});
+  const size_t share_words = table * size_t(slot_pairs(11));  // room for the widest layout
+  if (soup_slots_.size() < size_t(shares) * share_words) soup_slots_.assign(size_t(shares) * share_words, 0);
   if (++soup_generation_ == 0) {  // wrapped: no slot may look current
-    std::fill(soup_slots_.begin(), soup_slots_.end(), SoupSlot{});
+    std::fill(soup_slots_.begin(), soup_slots_.end(), 0);
     soup_generation_ = 1;
   }
   soup_index_.resize(corners);
@@ -117,7 +128,7 @@ bool Context::draw_soup(GLint first, GLsizei count) {
   // Share s: corners [bounds(s), bounds(s + 1)), its distinct ones staged from bounds(s) on.
   auto find = [&](int s) {
     const size_t lo = bounds(s);
-    distinct[size_t(s) + 1] = find_in(src, first, lo, bounds(s + 1), soup_slots_.data() + size_t(s) * table,
+    distinct[size_t(s) + 1] = find_in(src, first, lo, bounds(s + 1), soup_slots_.data() + size_t(s) * share_words,
                                       soup_generation_, soup_index_.data(), soup_staged_.data() + lo * size_t(record));
   };
   const float* compact = soup_staged_.data();

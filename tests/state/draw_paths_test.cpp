@@ -87,11 +87,13 @@ void set_up(bool color_material) {
 
 enum class Path { Immediate, Arrays };
 
-void send(const Soup& s, Path path, bool colours) {
+// colour_size: 4, or 3 (the alpha left out: glColor3fv, glColorPointer(3) over the same floats).
+void send(const Soup& s, Path path, bool colours, int colour_size = 4) {
   if (path == Path::Immediate) {
     glBegin(GL_TRIANGLES);
     for (size_t i = 0; i < s.size(); ++i) {
-      if (colours) glColor4fv(&s.color[4 * i]);
+      if (colours && colour_size == 4) glColor4fv(&s.color[4 * i]);
+      if (colours && colour_size == 3) glColor3fv(&s.color[4 * i]);
       glNormal3fv(&s.normal[3 * i]);
       glVertex3fv(&s.pos[3 * i]);
     }
@@ -103,7 +105,7 @@ void send(const Soup& s, Path path, bool colours) {
   if (colours) glEnableClientState(GL_COLOR_ARRAY);
   glVertexPointer(3, GL_FLOAT, 0, s.pos.data());
   glNormalPointer(GL_FLOAT, 0, s.normal.data());
-  glColorPointer(4, GL_FLOAT, 0, s.color.data());
+  glColorPointer(colour_size, GL_FLOAT, 4 * sizeof(float), s.color.data());
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(s.size()));
   glDisableClientState(GL_COLOR_ARRAY);
   glDisableClientState(GL_NORMAL_ARRAY);
@@ -111,7 +113,7 @@ void send(const Soup& s, Path path, bool colours) {
 }
 
 // The soups drawn one after another (each its own glBegin or draw), on the triangle list or not.
-Picture draw(const std::vector<Soup>& soups, Path path, bool lists, bool color_material) {
+Picture draw(const std::vector<Soup>& soups, Path path, bool lists, bool color_material, int colour_size = 4) {
   auto soft = backends::make("soft");
   soft->begin(kSize, kSize);
   state::Context* c = state::Context::current();
@@ -123,20 +125,20 @@ Picture draw(const std::vector<Soup>& soups, Path path, bool lists, bool color_m
       glTranslatef(0.15f, -0.1f, 0);
       glRotatef(20, 0, 1, 0);
     }
-    send(s, path, color_material);
+    send(s, path, color_material, colour_size);
   }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   const raster::Framebuffer& fb = c->framebuffer();
   return {fb.color, fb.depth};
 }
 
-void expect_same(const std::vector<Soup>& soups, bool color_material) {
+void expect_same(const std::vector<Soup>& soups, bool color_material, int colour_size = 4) {
   for (Path path : {Path::Immediate, Path::Arrays}) {
-    const Picture want = draw(soups, path, false, color_material);
+    const Picture want = draw(soups, path, false, color_material, colour_size);
     size_t drawn = 0;
     for (size_t i = 0; i < want.color.size(); i += 4) drawn += want.color[i] != 0;
     EXPECT_GT(drawn, want.color.size() / 4 / 4) << "the fan covers the middle of the picture";
-    const Picture got = draw(soups, path, true, color_material);
+    const Picture got = draw(soups, path, true, color_material, colour_size);
     EXPECT_TRUE(got.color == want.color) << (path == Path::Immediate ? "immediate" : "arrays");
     EXPECT_TRUE(got.depth == want.depth) << (path == Path::Immediate ? "immediate" : "arrays");
   }
@@ -157,6 +159,9 @@ TEST(DrawPaths, ACornerWithTheSamePositionButAnotherNormalOrColourIsNotShared) {
   expect_same({fan(100, false, true)}, true);
   expect_same({grid(120, true, false)}, false);
   expect_same({grid(120, false, true)}, true);
+  // Three colour components: glDrawArrays' key of nine words, its last pair half empty.
+  expect_same({grid(120, false, true)}, true, 3);
+  expect_same({grid(120, true, false)}, true, 3);
 }
 
 TEST(DrawPaths, NothingIsSharedWithAnEarlierGlBegin) {
