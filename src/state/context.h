@@ -604,13 +604,15 @@ class Context {
   // A direct-mapped cache of recent entries by a hash of position and normal. Each slot holds the
   // key's bits beside the entry, so a repeat is found reading the slot alone (list_pos_ and
   // list_normal_ outgrow the caches); a slot of an older glBegin has another generation.
-  struct CornerSlot {
+  struct alignas(64) CornerSlot {
     uint64_t pos[2], normal[3];
     uint32_t entry, generation;
   };
-  // 192 KiB (in L2): at depth 7 the icosphere's 983,040 corners make 178,500 entries for its
-  // 163,842 vertices, against 202,289 with 512 slots (in L1), and each entry saved is a lookup
-  // missed and a vertex lit; frames 3-4 % faster at depths 5 and 7 (docs/performance.md).
+  // A slot a cache line (48 bytes of it used): one that straddled two lines waited on both, which
+  // made immediate-mode frames 1-3 % slower at depths 5 and 7. 256 KiB (in L2): at depth 7 the
+  // icosphere's 983,040 corners make 178,500 entries for its 163,842 vertices, against 202,289
+  // with 512 slots (in L1), and each entry saved is a lookup missed and a vertex lit; frames 3-4 %
+  // faster at depths 5 and 7 (docs/performance.md).
   static constexpr int kCornerSlotBits = 12;
   std::array<CornerSlot, size_t(1) << kCornerSlotBits> corner_slots_{};
   uint32_t corner_generation_ = 0;
