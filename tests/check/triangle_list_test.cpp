@@ -85,6 +85,14 @@ std::vector<Case> cases() {
     out.push_back({"odd_size", d});
   }
   {
+    // Half the triangles cover no pixel centre: the grouped setup queues the others for their
+    // planes (raster/wide/triangle_list_wide.cpp), among them clipped ones drawn in their order.
+    scene::Description d = sphere(6);
+    d.width = d.height = 160;
+    d.camera.z_near = 3.4;
+    out.push_back({"tiny_triangles_queued", d});
+  }
+  {
     scene::Description d = sphere(3);  // lit, the diffuse colour following each vertex's colour
     d.color_material.enabled = true;
     d.color_material.mode = scene::ColorMode::Diffuse;

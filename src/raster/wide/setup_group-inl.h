@@ -78,13 +78,12 @@ HWY_INLINE void VertexColumns(const ShadedVertex* hot, const int32_t (&corner)[k
   }
 }
 
-// Sets up the triangles of corner[c][lane] (all vertices mapped; lanes past the group's end
-// repeat one of its triangles).
-HWY_INLINE void SetupTriangles(const ListVertices& vs, const int32_t (&corner)[3][kGroup], int fb_w, int fb_h, SetupGroup& out) {
-  const GroupF df;
+// The triangles' edges from their snapped corners: the box, its coverage, which kernel draws
+// each lane (box, none, tiny, cover, edges); returns the lanes whose vertices 1 and 2 SetupPlanes
+// exchanges (counter-clockwise).
+HWY_INLINE unsigned SetupEdges(const ListVertices& vs, const int32_t (&corner)[3][kGroup], int fb_w, int fb_h, SetupGroup& out) {
   const hn::RebindToSigned<GroupF> di;
   using VI = hn::Vec<decltype(di)>;
-  using VF = hn::Vec<GroupF>;
   // Snapped positions: box, extents, area.
   const int32_t* snapped = &vs.snapped.data()->x;
   VI sx[3], sy[3];
@@ -144,6 +143,17 @@ HWY_INLINE void SetupTriangles(const ListVertices& vs, const int32_t (&corner)[3
   hn::Store(cover, di, out.cover);
   const VI k1 = hn::Set(di, 1);
   out.tiny = out.box & MaskBits(di, hn::And(hn::Not(hn::Gt(hn::Sub(xmax, xmin), k1)), hn::Not(hn::Gt(hn::Sub(ymax, ymin), k1))));
+  return swap_bits;
+}
+
+// The depth plane and the smooth planes of the triangles of corner[c][lane], vertices 1 and 2
+// exchanged in the lanes of swap_bits (SetupEdges' result).
+HWY_INLINE void SetupPlanes(const ListVertices& vs, const int32_t (&corner)[3][kGroup], int fb_h, unsigned swap_bits, SetupGroup& out) {
+  const GroupF df;
+  const hn::RebindToSigned<GroupF> di;
+  using VF = hn::Vec<GroupF>;
+  uint8_t swap_byte = uint8_t(swap_bits);
+  const auto swap = hn::RebindMask(di, hn::LoadMaskBits(df, &swap_byte));
   // Window positions and colours, an attribute a vector.
   VF v[3][8];  // x, y down, z, w, r, g, b, a
   for (int c = 0; c < 3; ++c) VertexColumns(vs.hot.data(), corner[c], v[c]);
@@ -215,6 +225,12 @@ HWY_INLINE void SetupTriangles(const ListVertices& vs, const int32_t (&corner)[3
     ok |= MaskBits(dh, hn::Not(hn::IsNaN(probe))) << at;
   }
   out.ok = ok;
+}
+
+// Sets up the triangles of corner[c][lane] (all vertices mapped; lanes past the group's end
+// repeat one of its triangles).
+HWY_INLINE void SetupTriangles(const ListVertices& vs, const int32_t (&corner)[3][kGroup], int fb_w, int fb_h, SetupGroup& out) {
+  SetupPlanes(vs, corner, fb_h, SetupEdges(vs, corner, fb_w, fb_h, out), out);
 }
 
 #endif  // vector targets with doubles

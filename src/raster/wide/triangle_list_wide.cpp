@@ -52,12 +52,92 @@ HWY_INLINE unsigned GroupCorners(const List& l, const uint32_t* entries, size_t 
   return MaskBits(di, hn::Lt(hn::BitCast(di, entry), hn::Zero(di)));
 }
 
-// draw_bins for states SetupTriangles covers: kGroup triangles set up at once, each then drawn by
-// the box kernel (nearly all of a subdivided sphere's) or, larger, by Rasterize.
+// The triangles of a group that draw something, queued in order for their planes (SetupPlanes,
+// the costlier half of the setup): at depth 7 nearly half of an icosphere's triangles cover no
+// pixel centre, and their planes were solved for nothing. A lane's edges, coverage and kind come
+// from SetupEdges, moved into the queue a vector at a time (compressed); its planes are solved
+// with the next kGroup queued lanes. Triangles are drawn in the order they come, as before.
+struct Queue {
+  static constexpr size_t kCap = 2 * kGroup;  // below kGroup before a group joins: room for a whole vector
+  enum : int32_t { kClippedLane = 1, kTinyLane = 2, kBoxLane = 4, kSwapLane = 8 };
+  alignas(64) int32_t corner[3][kCap];
+  alignas(64) int32_t edges[kEdgeFields][kCap];
+  alignas(64) int32_t cover[kCap];
+  alignas(64) int32_t kind[kCap];
+  size_t n = 0;
+};
+
+// Draws `count` lanes (count <= kGroup) of the triangles of `corner`, their edges and coverage in
+// rows laid out `stride` apart: the queue's first, or a group's own where every lane draws and none
+// is queued (the queue's moves cost more than they save where the triangles are larger: depth 5).
 template <DepthMode Mode>
-void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+uint64_t DrawLanes(const List& l, const Bands& mine, const int32_t (&corner)[3][kGroup], const int32_t* edges,
+                   const int32_t* cover, const int32_t* kinds, size_t stride, size_t count) {
+  const hn::RebindToSigned<GroupF> di;
+  const auto kind = hn::Load(di, kinds);
+  const unsigned lanes = (1u << count) - 1;
+  const auto has = [&](int32_t bits, int32_t want) {
+    return MaskBits(di, hn::Eq(hn::And(kind, hn::Set(di, bits)), hn::Set(di, want))) & lanes;
+  };
+  const unsigned swap = has(Queue::kSwapLane, Queue::kSwapLane);
+  const unsigned planes = has(Queue::kClippedLane | Queue::kBoxLane, Queue::kBoxLane);
+  SetupGroup g;
+  if (planes) SetupPlanes(l.vs, corner, l.fb.height, swap, g);
   uint64_t nonfinite = 0;
   const GLenum func = l.s.depth_func;
+  for (size_t lane = 0; lane < count; ++lane) {
+    const std::array<size_t, 3> vi = {size_t(corner[0][lane]), size_t(corner[1][lane]), size_t(corner[2][lane])};
+    const KernelPlanes kp{&g.z[0][lane], &g.f[0][lane], int(kGroup)};
+    const int32_t k = kinds[lane];
+    if (k & Queue::kClippedLane) {
+      draw_clipped(l, vi, mine);
+    } else if (k & (Queue::kTinyLane | Queue::kBoxLane)) {
+      if (!(g.ok >> lane & 1)) continue;  // not drawn, as smooth_planes decides
+      const int xmin = edges[kXmin * stride + lane], ymin = edges[kYmin * stride + lane];
+      const int w = edges[kXmax * stride + lane] - xmin + 1;
+      if (k & Queue::kTinyLane) {
+        unsigned bits = unsigned(cover[lane]);
+        if (!mine.owns(ymin / kBandRows)) bits &= 0xC;
+        if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
+        if (bits) nonfinite += TinyShade<Mode>(l.fb, kp, xmin, ymin, w, bits, func);
+      }
+      else nonfinite += BoxDraw<Mode>(l.fb, {edges + lane, int(stride)}, kp, mine, func);
+    } else {
+      const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
+      nonfinite += DrawOne<Mode>(l, mine, vi, p);
+    }
+  }
+  return nonfinite;
+}
+
+// Draws the first `count` queued lanes and moves the rest to the front.
+template <DepthMode Mode>
+uint64_t DrawQueued(const List& l, const Bands& mine, Queue& q, size_t count) {
+  const hn::RebindToSigned<GroupF> di;
+  alignas(64) int32_t corner[3][kGroup];
+  for (int c = 0; c < 3; ++c) {
+    hn::Store(hn::Load(di, q.corner[c]), di, corner[c]);
+    for (size_t lane = count; lane < kGroup; ++lane) corner[c][lane] = corner[c][count - 1];  // lanes past the end repeat the last
+  }
+  const uint64_t nonfinite = DrawLanes<Mode>(l, mine, corner, &q.edges[0][0], q.cover, q.kind, Queue::kCap, count);
+  q.n -= count;
+  if (q.n > 0) {  // fewer than kGroup: a vector a row
+    auto front = [&](int32_t* row) { hn::Store(hn::LoadU(di, row + count), di, row); };
+    for (auto& row : q.corner) front(row);
+    for (auto& row : q.edges) front(row);
+    front(q.cover), front(q.kind);
+  }
+  return nonfinite;
+}
+
+// draw_bins for states SetupTriangles covers: kGroup triangles' edges at once, the lanes that draw
+// queued, each then drawn by the box kernel (nearly all of a subdivided sphere's) or, larger, by
+// Rasterize.
+template <DepthMode Mode>
+void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in, const size_t* counts, int shares) {
+  const hn::RebindToSigned<GroupF> di;
+  uint64_t nonfinite = 0;
+  Queue q;
   for (int share = 0; share < shares; ++share) {
     const uint32_t* list = in[share];
     const size_t n = counts[share];
@@ -68,31 +148,39 @@ void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in
       alignas(64) int32_t corner[3][kGroup];
       const unsigned clipped = GroupCorners(l, list + e, lanes, corner);
       SetupGroup g;
-      SetupTriangles(l.vs, corner, l.fb.width, l.fb.height, g);
-      for (size_t lane = 0; lane < lanes; ++lane) {
-        const std::array<size_t, 3> vi = {size_t(corner[0][lane]), size_t(corner[1][lane]), size_t(corner[2][lane])};
-        const KernelPlanes kp{&g.z[0][lane], &g.f[0][lane], int(kGroup)};
-        const int xmin = g.edges[kXmin][lane], ymin = g.edges[kYmin][lane], w = g.edges[kXmax][lane] - xmin + 1;
-        if (clipped >> lane & 1) {
-          draw_clipped(l, vi, mine);
-        } else if (g.tiny >> lane & 1) {
-          // At most 2x2 centres, their coverage known: most such triangles at high subdivision
-          // cover none.
-          unsigned bits = unsigned(g.cover[lane]);
-          if (!mine.owns(ymin / kBandRows)) bits &= 0xC;
-          if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
-          if (!bits || !(g.ok >> lane & 1)) continue;
-          nonfinite += TinyShade<Mode>(l.fb, kp, xmin, ymin, w, bits, func);
-        } else if (g.box >> lane & 1) {
-          if (!(g.ok >> lane & 1)) continue;  // not drawn, as smooth_planes decides
-          nonfinite += BoxDraw<Mode>(l.fb, {&g.edges[0][lane], int(kGroup)}, kp, mine, func);
-        } else if (!(g.none >> lane & 1)) {
-          const Snapped p[3] = {l.vs.snapped[vi[0]], l.vs.snapped[vi[1]], l.vs.snapped[vi[2]]};
-          nonfinite += DrawOne<Mode>(l, mine, vi, p);
-        }
+      const unsigned swap = SetupEdges(l.vs, corner, l.fb.width, l.fb.height, g);
+      // A lane draws unless it covers no pixel centre: most tiny ones (at most 2x2 centres, their
+      // coverage known) at high subdivision. (Whether this thread's bands hold them is asked as
+      // they are drawn: a tiny triangle across two bands is rare.)
+      const unsigned uncovered = MaskBits(di, hn::Eq(hn::Load(di, g.cover), hn::Zero(di)));
+      const unsigned keep = (clipped | ((g.box | ~g.none) & ~(g.tiny & uncovered))) & ((1u << lanes) - 1);
+      if (!keep) continue;
+      alignas(64) int32_t kind[kGroup];
+      {
+        auto lanes_of = [&](unsigned bits, int32_t k) {
+          const uint8_t byte = uint8_t(bits);
+          return hn::IfThenElseZero(hn::LoadMaskBits(di, &byte), hn::Set(di, k));
+        };
+        hn::Store(hn::Or(hn::Or(lanes_of(clipped, Queue::kClippedLane), lanes_of(g.tiny, Queue::kTinyLane)),
+                         hn::Or(lanes_of(g.box, Queue::kBoxLane), lanes_of(swap, Queue::kSwapLane))),
+                  di, kind);
       }
+      if (keep == (1u << kGroup) - 1) {  // every lane draws: the queue first, then the group as it is
+        if (q.n > 0) nonfinite += DrawQueued<Mode>(l, mine, q, q.n);
+        nonfinite += DrawLanes<Mode>(l, mine, corner, &g.edges[0][0], g.cover, kind, kGroup, kGroup);
+        continue;
+      }
+      const uint8_t keep_byte = uint8_t(keep);
+      const auto m = hn::LoadMaskBits(di, &keep_byte);
+      auto push = [&](const int32_t* from, int32_t* to) { hn::CompressStore(hn::Load(di, from), m, di, to + q.n); };
+      for (int c = 0; c < 3; ++c) push(corner[c], q.corner[c]);
+      for (int f = 0; f < kEdgeFields; ++f) push(g.edges[f], q.edges[f]);
+      push(g.cover, q.cover), push(kind, q.kind);
+      q.n += size_t(__builtin_popcount(keep));
+      if (q.n >= kGroup) nonfinite += DrawQueued<Mode>(l, mine, q, kGroup);
     }
   }
+  if (q.n > 0) nonfinite += DrawQueued<Mode>(l, mine, q, q.n);
   count_nonfinite(l.s, nonfinite);
 }
 #endif
