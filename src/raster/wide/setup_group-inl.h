@@ -30,6 +30,9 @@ using GroupF = hn::CappedTag<float, 8>;
 constexpr size_t kGroup = hn::MaxLanes(GroupF());
 static_assert(kGroup == 4 || kGroup == 8, "groups of a 128-bit or a 256-bit vector");
 
+// What draws a lane (SetupGroup::kind): bits.
+enum LaneKind : int32_t { kClippedLane = 1, kTinyLane = 2, kBoxLane = 4, kSwapLane = 8 };
+
 struct SetupGroup {
   alignas(64) int32_t edges[kEdgeFields][kGroup];  // KernelEdges, stride kGroup
   alignas(64) float z[3][kGroup];                  // depth_plane's
@@ -39,6 +42,7 @@ struct SetupGroup {
   unsigned none;  // lanes that cover no pixel centre
   unsigned ok;    // lanes whose planes are within float (the others are not drawn)
   unsigned tiny;  // box lanes of at most 2x2 pixel centres (their coverage in `cover`)
+  alignas(64) int32_t kind[kGroup];  // a lane's LaneKind bits from SetupEdges (kClippedLane: the caller's)
 };
 
 template <class D>
@@ -142,7 +146,12 @@ HWY_INLINE unsigned SetupEdges(const ListVertices& vs, const int32_t (&corner)[3
   for (int q = 0; q < 4; ++q) cover = hn::Or(cover, hn::IfThenElseZero(in[q], hn::Set(di, 1 << q)));
   hn::Store(cover, di, out.cover);
   const VI k1 = hn::Set(di, 1);
-  out.tiny = out.box & MaskBits(di, hn::And(hn::Not(hn::Gt(hn::Sub(xmax, xmin), k1)), hn::Not(hn::Gt(hn::Sub(ymax, ymin), k1))));
+  const auto tiny = hn::And(hn::Not(hn::Gt(hn::Sub(xmax, xmin), k1)), hn::Not(hn::Gt(hn::Sub(ymax, ymin), k1)));
+  out.tiny = out.box & MaskBits(di, tiny);
+  const auto box = hn::AndNot(flat, small);
+  hn::Store(hn::Or(hn::IfThenElseZero(swap, hn::Set(di, kSwapLane)),
+                   hn::IfThenElseZero(box, hn::IfThenElse(tiny, hn::Set(di, kTinyLane | kBoxLane), hn::Set(di, kBoxLane)))),
+            di, out.kind);
   return swap_bits;
 }
 

@@ -59,7 +59,6 @@ HWY_INLINE unsigned GroupCorners(const List& l, const uint32_t* entries, size_t 
 // with the next kGroup queued lanes. Triangles are drawn in the order they come, as before.
 struct Queue {
   static constexpr size_t kCap = 2 * kGroup;  // below kGroup before a group joins: room for a whole vector
-  enum : int32_t { kClippedLane = 1, kTinyLane = 2, kBoxLane = 4, kSwapLane = 8 };
   alignas(64) int32_t corner[3][kCap];
   alignas(64) int32_t edges[kEdgeFields][kCap];
   alignas(64) int32_t cover[kCap];
@@ -67,20 +66,25 @@ struct Queue {
   size_t n = 0;
 };
 
+// For each mask of kGroup lanes, the lanes it holds in order (the rest 0): a compression by a
+// table lookup. (Highway's CompressStore on AVX2 copied a table of its own onto the stack at every
+// call: the frame twice as slow.)
+struct CompressTable {
+  alignas(64) int32_t lanes[1u << kGroup][kGroup];
+  constexpr CompressTable() : lanes{} {
+    for (unsigned m = 0; m < (1u << kGroup); ++m)
+      for (unsigned lane = 0, k = 0; lane < kGroup; ++lane)
+        if (m >> lane & 1) lanes[m][k++] = int32_t(lane);
+  }
+};
+static constexpr CompressTable kCompress{};
+
 // Draws `count` lanes (count <= kGroup) of the triangles of `corner`, their edges and coverage in
 // rows laid out `stride` apart: the queue's first, or a group's own where every lane draws and none
 // is queued (the queue's moves cost more than they save where the triangles are larger: depth 5).
 template <DepthMode Mode>
 uint64_t DrawLanes(const List& l, const Bands& mine, const int32_t (&corner)[3][kGroup], const int32_t* edges,
-                   const int32_t* cover, const int32_t* kinds, size_t stride, size_t count) {
-  const hn::RebindToSigned<GroupF> di;
-  const auto kind = hn::Load(di, kinds);
-  const unsigned lanes = (1u << count) - 1;
-  const auto has = [&](int32_t bits, int32_t want) {
-    return MaskBits(di, hn::Eq(hn::And(kind, hn::Set(di, bits)), hn::Set(di, want))) & lanes;
-  };
-  const unsigned swap = has(Queue::kSwapLane, Queue::kSwapLane);
-  const unsigned planes = has(Queue::kClippedLane | Queue::kBoxLane, Queue::kBoxLane);
+                   const int32_t* cover, const int32_t* kinds, size_t stride, size_t count, unsigned swap, unsigned planes) {
   SetupGroup g;
   if (planes) SetupPlanes(l.vs, corner, l.fb.height, swap, g);
   uint64_t nonfinite = 0;
@@ -89,13 +93,13 @@ uint64_t DrawLanes(const List& l, const Bands& mine, const int32_t (&corner)[3][
     const std::array<size_t, 3> vi = {size_t(corner[0][lane]), size_t(corner[1][lane]), size_t(corner[2][lane])};
     const KernelPlanes kp{&g.z[0][lane], &g.f[0][lane], int(kGroup)};
     const int32_t k = kinds[lane];
-    if (k & Queue::kClippedLane) {
+    if (k & kClippedLane) {
       draw_clipped(l, vi, mine);
-    } else if (k & (Queue::kTinyLane | Queue::kBoxLane)) {
+    } else if (k & (kTinyLane | kBoxLane)) {
       if (!(g.ok >> lane & 1)) continue;  // not drawn, as smooth_planes decides
       const int xmin = edges[kXmin * stride + lane], ymin = edges[kYmin * stride + lane];
       const int w = edges[kXmax * stride + lane] - xmin + 1;
-      if (k & Queue::kTinyLane) {
+      if (k & kTinyLane) {
         unsigned bits = unsigned(cover[lane]);
         if (!mine.owns(ymin / kBandRows)) bits &= 0xC;
         if (!mine.owns((ymin + 1) / kBandRows)) bits &= 0x3;
@@ -119,7 +123,14 @@ uint64_t DrawQueued(const List& l, const Bands& mine, Queue& q, size_t count) {
     hn::Store(hn::Load(di, q.corner[c]), di, corner[c]);
     for (size_t lane = count; lane < kGroup; ++lane) corner[c][lane] = corner[c][count - 1];  // lanes past the end repeat the last
   }
-  const uint64_t nonfinite = DrawLanes<Mode>(l, mine, corner, &q.edges[0][0], q.cover, q.kind, Queue::kCap, count);
+  // The lanes whose vertices 1 and 2 swap, and those whose planes the box kernels read.
+  const auto kind = hn::Load(di, q.kind);
+  const unsigned lanes = (1u << count) - 1;
+  const auto has = [&](int32_t bits, int32_t want) {
+    return MaskBits(di, hn::Eq(hn::And(kind, hn::Set(di, bits)), hn::Set(di, want))) & lanes;
+  };
+  const uint64_t nonfinite = DrawLanes<Mode>(l, mine, corner, &q.edges[0][0], q.cover, q.kind, Queue::kCap, count,
+                                             has(kSwapLane, kSwapLane), has(kClippedLane | kBoxLane, kBoxLane));
   q.n -= count;
   if (q.n > 0) {  // fewer than kGroup: a vector a row
     auto front = [&](int32_t* row) { hn::Store(hn::LoadU(di, row + count), di, row); };
@@ -155,24 +166,15 @@ void DrawBinsGrouped(const List& l, const Bands& mine, const uint32_t* const* in
       const unsigned uncovered = MaskBits(di, hn::Eq(hn::Load(di, g.cover), hn::Zero(di)));
       const unsigned keep = (clipped | ((g.box | ~g.none) & ~(g.tiny & uncovered))) & ((1u << lanes) - 1);
       if (!keep) continue;
-      alignas(64) int32_t kind[kGroup];
-      {
-        auto lanes_of = [&](unsigned bits, int32_t k) {
-          const uint8_t byte = uint8_t(bits);
-          return hn::IfThenElseZero(hn::LoadMaskBits(di, &byte), hn::Set(di, k));
-        };
-        hn::Store(hn::Or(hn::Or(lanes_of(clipped, Queue::kClippedLane), lanes_of(g.tiny, Queue::kTinyLane)),
-                         hn::Or(lanes_of(g.box, Queue::kBoxLane), lanes_of(swap, Queue::kSwapLane))),
-                  di, kind);
-      }
+      for (unsigned c = clipped & ((1u << lanes) - 1); c; c &= c - 1) g.kind[__builtin_ctz(c)] |= kClippedLane;
+      const int32_t* kind = g.kind;
       if (keep == (1u << kGroup) - 1) {  // every lane draws: the queue first, then the group as it is
         if (q.n > 0) nonfinite += DrawQueued<Mode>(l, mine, q, q.n);
-        nonfinite += DrawLanes<Mode>(l, mine, corner, &g.edges[0][0], g.cover, kind, kGroup, kGroup);
+        nonfinite += DrawLanes<Mode>(l, mine, corner, &g.edges[0][0], g.cover, kind, kGroup, kGroup, swap, g.box & ~clipped);
         continue;
       }
-      const uint8_t keep_byte = uint8_t(keep);
-      const auto m = hn::LoadMaskBits(di, &keep_byte);
-      auto push = [&](const int32_t* from, int32_t* to) { hn::CompressStore(hn::Load(di, from), m, di, to + q.n); };
+      const auto order = hn::SetTableIndices(di, kCompress.lanes[keep]);
+      auto push = [&](const int32_t* from, int32_t* to) { hn::StoreU(hn::TableLookupLanes(hn::Load(di, from), order), di, to + q.n); };
       for (int c = 0; c < 3; ++c) push(corner[c], q.corner[c]);
       for (int f = 0; f < kEdgeFields; ++f) push(g.edges[f], q.edges[f]);
       push(g.cover, q.cover), push(kind, q.kind);
