@@ -263,6 +263,17 @@ size_t BinWide(const List& l, size_t first, size_t last, int units, uint32_t** o
       VI d = hn::Sub(hn::Set(di, o), first_owner);
       d = hn::IfThenElse(hn::Lt(d, zero), hn::Add(d, vunits), d);
       const auto mine = hn::Or(clipped, hn::AndNot(hn::Gt(d, bands), keep));
+#if FFCOMPAT_SETUP_GROUP
+      if constexpr (hn::MaxLanes(decltype(di)()) == kGroup) {
+        // Eight lanes or four (AVX2, SSE4, NEON): compressed by a table lookup, as the setup's queue
+        // is (Highway's Compress on AVX2 copied its table onto the stack at every call).
+        const unsigned bits = MaskBits(di, mine);
+        hn::StoreU(hn::TableLookupLanes(marked, hn::SetTableIndices(di, kCompress.lanes[bits])), di,
+                   reinterpret_cast<int32_t*>(out[o]));
+        out[o] += unsigned(__builtin_popcount(bits));
+        continue;
+      }
+#endif
       // Compress, then a plain store: Zen 4 runs AVX-512's compressing store to memory slowly.
       hn::StoreU(hn::Compress(marked, mine), di, reinterpret_cast<int32_t*>(out[o]));
       out[o] += hn::CountTrue(di, mine);
