@@ -20,7 +20,7 @@ namespace ffc::raster::detail {
 // Whether an edge owns the pixel centres exactly on it, from its direction (dx, dy) in the
 // triangle's counter-clockwise order, y up (GL window coordinates): left and bottom edges do, so
 // a centre on an edge two triangles share is drawn once. The rule every path follows
-// (setup_edges; SetupTriangles in wide/setup_group-inl.h, a triangle a lane).
+// (setup_edges; SetupEdges and SetupPlanes in wide/setup_group-inl.h, a triangle a lane).
 inline bool owns_centres_on_edge(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
 
 // Edge i of a set-up triangle (from vertex i + 1 to vertex i + 2) as a function of the pixel
@@ -56,7 +56,7 @@ inline bool depth_pass(GLenum func, uint32_t z, uint32_t stored) {
 // lp_build_depth_clamp; a NaN to 0: maxss gives its second operand), scaled by 2^24 - 1 in float
 // and rounded half to even (lp_bld_conv.c lp_build_clamped_float_to_unsigned_norm, the branch for
 // 24 bits = float's mantissa + 1). Ties between triangles are decided by these exact bits, so every
-// copy (wide/kernels-inl.h Depth24, SetupTriangles in wide/setup_group-inl.h) computes the same.
+// copy (wide/kernels-inl.h Depth24, SetupEdges and SetupPlanes in wide/setup_group-inl.h) computes the same.
 inline uint32_t depth24(float z) {
 #if FFCOMPAT_X86
   const __m128 c = _mm_min_ss(_mm_max_ss(_mm_set_ss(z), _mm_setzero_ps()), _mm_set_ss(1.0f));

@@ -236,12 +236,6 @@ HWY_INLINE void SetupPlanes(const ListVertices& vs, const int32_t (&corner)[3][k
   out.ok = ok;
 }
 
-// Sets up the triangles of corner[c][lane] (all vertices mapped; lanes past the group's end
-// repeat one of its triangles).
-HWY_INLINE void SetupTriangles(const ListVertices& vs, const int32_t (&corner)[3][kGroup], int fb_w, int fb_h, SetupGroup& out) {
-  SetupPlanes(vs, corner, fb_h, SetupEdges(vs, corner, fb_w, fb_h, out), out);
-}
-
 #endif  // vector targets with doubles
 
 }  // namespace ffc::raster::detail::HWY_NAMESPACE

@@ -80,8 +80,10 @@ struct CompressTable {
 static constexpr CompressTable kCompress{};
 
 // Draws `count` lanes (count <= kGroup) of the triangles of `corner`, their edges and coverage in
-// rows laid out `stride` apart: the queue's first, or a group's own where every lane draws and none
-// is queued (the queue's moves cost more than they save where the triangles are larger: depth 5).
+// rows laid out `stride` apart: the queue's first, or, after the queue, a group's own where every
+// lane draws (the queue's moves cost more than they save where the triangles are larger: depth 5).
+// swap: the lanes whose vertices 1 and 2 SetupEdges exchanged; planes: the lanes the box kernels
+// draw, whose planes are solved.
 template <DepthMode Mode>
 uint64_t DrawLanes(const List& l, const Bands& mine, const int32_t (&corner)[3][kGroup], const int32_t* edges,
                    const int32_t* cover, const int32_t* kinds, size_t stride, size_t count, unsigned swap, unsigned planes) {
@@ -141,7 +143,7 @@ uint64_t DrawQueued(const List& l, const Bands& mine, Queue& q, size_t count) {
   return nonfinite;
 }
 
-// draw_bins for states SetupTriangles covers: kGroup triangles' edges at once, the lanes that draw
+// draw_bins for states the grouped setup covers (setup_group-inl.h): kGroup triangles' edges at once, the lanes that draw
 // queued, each then drawn by the box kernel (nearly all of a subdivided sphere's) or, larger, by
 // Rasterize.
 template <DepthMode Mode>
