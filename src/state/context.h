@@ -284,6 +284,7 @@ class Context {
   void note_vertexless_node();  // a vertex list ends: one with attributes and no vertex (kListVertexlessNode)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
   void note_node_mode(GLenum mode, int vertices);  // a primitive's vertices in the open vertex list (kListModesFedBackFirst)
+  void close_node_modes();  // the open vertex list's draws as Mesa merges them (kListModesFedBackFirst, kListModesCrash)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies
                                         // nothing, a closed line loop (loop: the attributes) replays its first vertex

@@ -383,7 +383,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = lists_.fallback = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
-  lists_.shade_model = 0, lists_.node_first_mode = 0;
+  lists_.shade_model = 0, lists_.node_modes.clear();
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
@@ -450,6 +450,7 @@ void Context::call_one_list(GLuint list) {
   if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
   if (it->second.vertexless && !it->second.loopback) deviations_.insert(kListVertexlessNode);
   if (it->second.mixed_modes && !it->second.loopback && render_mode_ != GL_RENDER) deviations_.insert(kListModesFedBackFirst);
+  if (it->second.modes_crash && !it->second.loopback && render_mode_ != GL_RENDER) deviations_.insert(kListModesCrash);
   const bool outer = lists_.replaying_loopback;
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
@@ -645,10 +646,36 @@ void Context::note_node_primitive(bool open) {
 // GL_COMPILE_AND_EXECUTE's own drawing, GL_RENDER. Named (row 72, a bug no program relies on): soft
 // feeds back every primitive.
 void Context::note_node_mode(GLenum mode, int vertices) {
-  if (vertices <= 0) return;
-  const GLenum family = mode == GL_LINE_STRIP ? GLenum(GL_LINES) : mode;
-  if (lists_.node_first_mode == 0) lists_.node_first_mode = family;
-  else if (lists_.node_first_mode != family) lists_.compiling.mixed_modes = true;
+  if (vertices > 0) lists_.node_modes.push_back(mode);
+}
+
+// The draws of the vertex list being closed, as compile_vertex_list (vbo_save_api.c) merges its
+// primitives: a GL_LINE_LOOP last in the vertex list becomes a GL_LINE_STRIP; a GL_LINE_STRIP becomes
+// GL_LINES where the draw before is GL_LINES or the primitive after a strip or lines; a primitive
+// joins the draw before where the modes are the same and not GL_LINE_LOOP, GL_TRIANGLE_FAN,
+// GL_QUAD_STRIP or GL_POLYGON. More than one mode among the draws: row 72. Measured (seed 271828
+// stream 817, repro list_modes_crash.txt): Mesa 22.3 segfaults in glCallList in feedback where a draw
+// after the second has another mode than the one before it (GL_LINE_LOOP, GL_LINE_LOOP,
+// GL_TRIANGLE_STRIP; three GL_LINE_LOOPs, the last a strip; GL_TRIANGLE_FAN, GL_TRIANGLE_FAN,
+// GL_LINES; GL_POLYGON, GL_POLYGON, GL_POINTS), not where only the second does (GL_POINTS,
+// GL_TRIANGLE_FAN, GL_TRIANGLE_FAN; two draws of two modes).
+void Context::close_node_modes() {
+  std::vector<GLenum>& m = lists_.node_modes;
+  if (!m.empty() && m.back() == GL_LINE_LOOP) m.back() = GL_LINE_STRIP;
+  std::vector<GLenum> draws;
+  for (size_t i = 0; i < m.size(); ++i) {
+    GLenum mode = m[i] == GL_LINE_STRIP ? GLenum(GL_LINES) : m[i];
+    const bool merge = !draws.empty() && draws.back() == mode && mode != GL_LINE_LOOP && mode != GL_TRIANGLE_FAN &&
+                       mode != GL_QUAD_STRIP && mode != GL_POLYGON;
+    const bool next_lines = i + 1 < m.size() && (m[i + 1] == GL_LINE_STRIP || m[i + 1] == GL_LINES);
+    if (m[i] == GL_LINE_STRIP && !merge && !next_lines) mode = GL_LINE_STRIP;
+    if (!merge) draws.push_back(mode);
+  }
+  for (size_t k = 1; k < draws.size(); ++k) {
+    if (draws[k] != draws[0]) lists_.compiling.mixed_modes = true;
+    if (k >= 2 && draws[k] != draws[k - 1]) lists_.compiling.modes_crash = true;
+  }
+  m.clear();
 }
 
 // Measured by the seed-8086 helper (repro list_vertexless_wrap_current.txt, seed 2026 stream 972):
@@ -669,7 +696,8 @@ void Context::note_vertexless_node() {
 void Context::end_list_node() {
   lists_.carry = 0;  // the flush empties the store's format (list_vertex_compiled)
   if (lists_.open) note_node_primitive(true);
-  lists_.node_last_mode = lists_.node_first_mode = 0;
+  close_node_modes();
+  lists_.node_last_mode = 0;
   note_vertexless_node();
   if (lists_.node_open)
     lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
@@ -716,7 +744,8 @@ void Context::close_store() {
 // stream 701 shrunk), so nothing is put back in the middle of the primitive; one from glBegin copies
 // its values so far, the start of the next.
 void Context::split_list_node(int joining) {
-  lists_.node_last_mode = lists_.node_first_mode = 0;  // the open primitive's rest starts the next vertex list
+  close_node_modes();
+  lists_.node_last_mode = 0;  // the open primitive's rest starts the next vertex list
   // Whether the vertex list before the wrap copies its last vertex to the current values (an attribute
   // besides the position in its format, its last primitive from glBegin), and so leaves Mesa inside
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
