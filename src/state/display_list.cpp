@@ -485,20 +485,26 @@ void replay_call_list_offset(GLuint offset);
 }  // namespace
 
 void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
-  if (type < GL_BYTE || type > GL_4_BYTES) return error(GL_INVALID_ENUM);
-  if (n < 0) return error(GL_INVALID_VALUE);
-  if (n == 0 || !lists) return;
-  // Compiled, the names are copied now and the list base read when the list runs.
+  const GLenum e = type < GL_BYTE || type > GL_4_BYTES ? GLenum(GL_INVALID_ENUM) : n < 0 ? GLenum(GL_INVALID_VALUE)
+                                                                                          : GLenum(GL_NO_ERROR);
+  // Compiled, the names are copied now and the list base read when the list runs. Mesa's save_CallLists
+  // flushes and compiles the call whatever its arguments: a bad type or a negative count raises its error
+  // when the list runs (and at once in GL_COMPILE_AND_EXECUTE, which executes it), not while compiling
+  // (measured, seed 271828 stream 1365, seed 161803 streams 471 and 1775: repro list_call_lists_bad_compiled.txt).
   if (DisplayList* l = list_recording()) {
     if (lists_.open) list_fallback();  // as glCallList (soft_gl.cpp)
     end_list_node();
-    for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
-    for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
+    if (e != GL_NO_ERROR) l->record<list_error>(e);
+    for (GLsizei i = 0; e == GL_NO_ERROR && lists && i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
+    for (GLsizei i = 0; e == GL_NO_ERROR && lists && i < n && l == &lists_.compiling; ++i)
+      l->calls.push_back(list_offset(type, lists, i));
     lists_.outside_attributes = 0, lists_.shade_model = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
     fallen_back_run();
   }
+  if (e != GL_NO_ERROR) return error(e);
+  if (n == 0 || !lists) return;
   const bool outermost = !lists_.calling;
   if (outermost) begin_list_calls();
   const GLuint base = lists_.base;
