@@ -47,6 +47,9 @@ void list_stray_end() {
 void list_node_split(bool draw, int copy, int joining) {
   if (Context* c = Context::current()) c->node_splits(draw, copy, joining);
 }
+void list_drop_open_primitive(bool keep_open) {
+  if (Context* c = Context::current()) c->drop_open_primitive(keep_open);
+}
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
@@ -544,9 +547,24 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
   if (e != GL_NO_ERROR) return compile_error(l, e);
+  // Inside the list's own open glBegin Mesa's save_DrawArrays begins the draw's primitive there and its
+  // glEnd ends it: the list's primitive is left without an end and without its vertices (they precede
+  // the draw's start), so nothing of it is drawn, and the list is outside glBegin after the draw, where
+  // a glBegin is no error. Measured (seed 271828 stream 1376, repro list_draw_inside_begin.txt): GL_LINE_LOOP
+  // of two vertices, glDrawArrays(GL_QUAD_STRIP, 0, 0), then a GL_TRIANGLES: no error, the triangle alone
+  // fed back; with a draw of four the quad strip alone (row 72: two modes).
+  // GL_COMPILE_AND_EXECUTE's executing side replays the vertex list through immediate mode
+  // (vbo_loopback_vertex_list): the list's glBegin opens the primitive, empty; the draw's glBegin
+  // raises GL_INVALID_OPERATION there (measured at the flush, glEndList), its vertices join the open
+  // primitive and its glEnd ends it.
+  const bool ends_open = lists_.open && !lists_.compiling_draw;
+  const bool executing = &l == &lists_.held_back;
+  if (ends_open) l.record<list_drop_open_primitive>(executing);
+  if (ends_open && executing) l.record<list_error>(GL_INVALID_OPERATION);
+  if (ends_open && count == 0 && executing) l.record<list_end>();
+  if (ends_open && count == 0 && forms_format(l)) lists_.open = false, lists_.closing_loop = false;
   // A draw of no vertex is a primitive of Mesa's store too (save_DrawArrays begins it): its vertex
   // list's FLUSH_FOR_DRAW flushes the values pending when the list runs (Context::flush_pending).
-  // Inside the list's own glBegin it also ends that primitive on Mesa (not modelled).
   if (count == 0 && &l == &lists_.compiling && !lists_.open) start_list_node(true);
   if (count == 0) return;
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
@@ -579,7 +597,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     lists_.wrap_copies = 0, lists_.closing_loop = lists_.loop_restarted = false;
   }
   if (&l == &lists_.compiling) start_list_node(true), lists_.node_last_mode = 0;  // no pair across a draw (not measured)
-  l.record<list_begin>(mode);
+  if (!(ends_open && executing)) l.record<list_begin>(mode);
   lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) {
     compile_element(l, indices ? GLint(indices[k]) : first + k);
@@ -593,6 +611,15 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
+}
+
+// The vertices of the open primitive are forgotten; it is ended too unless keep_open (compile_elements).
+void Context::drop_open_primitive(bool keep_open) {
+  if (!in_begin_) return;
+  verts_.clear(), pending_in_.clear(), pending_slot_.clear(), sink_verts_.clear(), sink_materials_.clear();
+  list_pos_.clear(), list_normal_.clear(), list_color_.clear(), list_corner_.clear();
+  early_.lit = early_.drawn = 0;
+  if (!keep_open) End();
 }
 
 void Context::stray_end() {
