@@ -47,8 +47,8 @@ void list_stray_end() {
 void list_node_split(bool draw, int copy, int joining) {
   if (Context* c = Context::current()) c->node_splits(draw, copy, joining);
 }
-void list_drop_open_primitive(bool keep_open) {
-  if (Context* c = Context::current()) c->drop_open_primitive(keep_open);
+void list_drop_open_primitive(bool keep_open, int drop) {
+  if (Context* c = Context::current()) c->drop_open_primitive(keep_open, drop);
 }
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
@@ -559,7 +559,9 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   // primitive and its glEnd ends it.
   const bool ends_open = lists_.open && !lists_.compiling_draw;
   const bool executing = &l == &lists_.held_back;
-  if (ends_open) l.record<list_drop_open_primitive>(executing);
+  // The vertices dropped: those sent since the primitive's glBegin or its last wrap (a wrap's first
+  // vertex list drew those before it).
+  if (ends_open) l.record<list_drop_open_primitive>(executing, lists_.vertices);
   if (ends_open && executing) l.record<list_error>(GL_INVALID_OPERATION);
   if (ends_open && count == 0 && executing) l.record<list_end>();
   if (ends_open && count == 0 && forms_format(l)) lists_.open = false, lists_.closing_loop = false;
@@ -613,12 +615,22 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
 }
 
-// The vertices of the open primitive are forgotten; it is ended too unless keep_open (compile_elements).
-void Context::drop_open_primitive(bool keep_open) {
+// The last `drop` vertices of the open primitive are forgotten; it is ended too unless keep_open
+// (compile_elements).
+void Context::drop_open_primitive(bool keep_open, int drop) {
   if (!in_begin_) return;
-  verts_.clear(), pending_in_.clear(), pending_slot_.clear(), sink_verts_.clear(), sink_materials_.clear();
-  list_pos_.clear(), list_normal_.clear(), list_color_.clear(), list_corner_.clear();
-  early_.lit = early_.drawn = 0;
+  const auto shorten = [drop](auto& v) { v.resize(v.size() - std::min(v.size(), size_t(std::max(drop, 0)))); };
+  if (immediate_list_) {
+    shorten(list_corner_);
+    wrap_start_ = std::min(wrap_start_, list_corner_.size());
+  } else {
+    light_pending();  // the batch's slots index verts_
+    const size_t n = verts_.size();
+    shorten(verts_);
+    wrap_start_ = std::min(wrap_start_, verts_.size());
+    if (sink_materials_.size() == sink_verts_.size()) shorten(sink_materials_);
+    if (n == 0) shorten(sink_verts_);  // feedback and selection keep their vertices there
+  }
   if (!keep_open) End();
 }
 
@@ -783,7 +795,10 @@ void Context::split_list_node(int joining) {
   // besides the position in its format, its last primitive from glBegin), and so leaves Mesa inside
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
   const int copy = lists_.node_draw || lists_.attributes == 0 ? 0 : lists_.open ? 2 : 1;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining);
+  // Bit 4: the wrapping attribute came after the open primitive's last vertex, whose values
+  // (list_snapshot_last_vertex) the vertex list before the wrap hands the current values.
+  const int last = joining && lists_.had_vertex && (lists_.trailing & joining) == joining ? 4 : 0;
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last);
   note_vertexless_node();
   close_store();
 }
@@ -791,8 +806,17 @@ void Context::split_list_node(int joining) {
 void Context::node_begins() {
   flush_pending(true);
   node_values_ = current_values();
+  lists_.node_inside = in_begin_, lists_.node_inside_mode = prim_mode_;
 }
 
+// A vertex list whose last primitive begun is a compiled draw copies nothing to the current values
+// (playback_copy_to_current is not called), so it leaves Mesa's CurrentExecPrimitive as the vertex
+// lists before it left it: inside a primitive a wrap cut (its first vertex list ends it not) even
+// where the list's glEnd ended it or a compiled draw inside it ended it, so that a glEnd the list
+// compiled after the draw raises nothing. Measured (seed 271828 stream 1376, repro
+// list_draw_inside_begin_wrapped.txt): glBegin(GL_POINTS), glColor3f, glVertex, glColor4f (the wrap),
+// then glDrawArrays of none or four (or glEnd, then the draw), then glEnd: no error, the point drawn;
+// without the wrap the last glEnd is GL_INVALID_OPERATION. Soft opens the primitive again, empty.
 void Context::node_ends(bool draw, int loop, bool copy) {
   if (lists_.replaying_loopback) {
     if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
@@ -800,15 +824,25 @@ void Context::node_ends(bool draw, int loop, bool copy) {
     if (loop & 2) color_ = lists_.loop_first_color;
   } else if (draw) {
     restore(node_values_);
+    if (lists_.node_inside && !in_begin_) Begin(lists_.node_inside_mode);
   } else if (copy) {
     lists_.mesa_inside = false;  // its last primitive ended in it
   }
 }
 
 void Context::node_splits(bool draw, int copy, int joining) {
+  const bool last = joining & 4;
+  joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
-  if (!draw) node_values_ = current_values();
+  if (draw) return;
+  // The values a later vertex list that copies nothing (its last primitive a compiled draw) leaves:
+  // this vertex list's last vertex's, not the wrapping attribute's (measured: glColor3f, glVertex,
+  // glColor4f(0, 0, 0, 0) (the wrap), a compiled draw: GL_CURRENT_COLOR alpha 1 after glCallList;
+  // repro list_draw_inside_begin_wrapped.txt).
+  node_values_ = current_values(), lists_.node_inside = in_begin_, lists_.node_inside_mode = prim_mode_;
+  if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
+  if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
 }
 
 // Mesa's flushes of the values a list left pending (the rule of the unmerged reading of vbo_save,
