@@ -107,6 +107,18 @@ void Assembly::note_smooth() {
   if ((m == GL_LINES || m == GL_LINE_STRIP || m == GL_LINE_LOOP) && two && c_.enabled_state(GL_LINE_SMOOTH) == 1)
     c_.deviations_.insert(kLineSmooth);
   if (m == GL_POINTS && any && c_.enabled_state(GL_POINT_SMOOTH) == 1) c_.deviations_.insert(kPointSmooth);
+  // Polygons drawn as lines or points (glPolygonMode) go through the same antialiasing stages: a
+  // degenerate triangle's edges of length 0 as dots (measured, seed 161803 streams 980 and 2648:
+  // glPolygonMode(GL_LINE) with GL_LINE_SMOOTH, a strip of one repeated index; repro
+  // polygon_mode_line_smooth.txt).
+  const bool polygon = m == GL_TRIANGLES || m == GL_TRIANGLE_STRIP || m == GL_TRIANGLE_FAN || m == GL_QUADS ||
+                       m == GL_QUAD_STRIP || m == GL_POLYGON;
+  if (polygon && any) {
+    const GLenum* pm = c_.polygon_mode_;
+    if ((pm[0] == GL_LINE || pm[1] == GL_LINE) && c_.enabled_state(GL_LINE_SMOOTH) == 1) c_.deviations_.insert(kLineSmooth);
+    if ((pm[0] == GL_POINT || pm[1] == GL_POINT) && c_.enabled_state(GL_POINT_SMOOTH) == 1)
+      c_.deviations_.insert(kPointSmooth);
+  }
 }
 
 // Most triangles lie inside the view volume: their vertices map to the window once, however many
