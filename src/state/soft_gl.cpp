@@ -172,13 +172,17 @@ Floats<16, GLdouble> matrix_values(const GLfloat* m) {
 }
 void APIENTRY LoadMatrixd(const GLdouble* m) { LoadMatrixValues(matrix_values(m)); }
 void APIENTRY LoadMatrixf(const GLfloat* m) { LoadMatrixValues(matrix_values(m)); }
-void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { LISTABLE(Materialf, f, p, v); FWD(Materialf(f, p, v)); }
+// glMaterialf and glMateriali reach Mesa's glMaterialfv (its loopback): inside a list's glBegin they
+// enter the vertex store as it does, not a state call's flush (measured, seed 161803 stream 2269:
+// glMaterialf(GL_FRONT, GL_SHININESS) inside a list's glBegin raised nothing when the list ran, soft
+// GL_INVALID_OPERATION; repro list_materialf_inside_begin.txt). (param, 0, 0, 0), as Context::Materialf.
+void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { MaterialValues(f, p, {{v, 0, 0, 0}}); }
 void APIENTRY Materialfv(GLenum f, GLenum p, const GLfloat* v) {
   Floats<4> c{};
   std::copy(v, v + material_param_count(p), c.v);
   MaterialValues(f, p, c);
 }
-void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { LISTABLE(Materiali, f, p, v); FWD(Materiali(f, p, v)); }
+void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { MaterialValues(f, p, {{GLfloat(v), 0, 0, 0}}); }
 void APIENTRY MatrixMode(GLenum m) { LISTABLE(MatrixMode, m); FWD(MatrixMode(m)); }
 void APIENTRY MultMatrixd(const GLdouble* m) { MultMatrixValues(matrix_values(m)); }
 void APIENTRY MultMatrixf(const GLfloat* m) { MultMatrixValues(matrix_values(m)); }
