@@ -349,6 +349,7 @@ const std::vector<KnownDeviation>& known_deviations() {
        true},
       drawn("mesa-list-strip-wrap", state::kListStripWrap),  // row 55
       drawn("mesa-list-incomplete-fed-back", state::kListIncompleteFedBack),  // row 66
+      drawn("mesa-list-incomplete-unfilled", state::kListIncompleteUnfilled),  // row 66, GL_RENDER
       drawn("mesa-list-padded-quad-drawn", state::kListPaddedQuadDrawn),      // row 70
       drawn("mesa-list-modes-fed-back-first", state::kListModesFedBackFirst),  // row 72
       // Row 72: the crash, from soft's model of Mesa's merged draws (Context::close_node_modes).

@@ -444,6 +444,10 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
+  // In GL_RENDER under an unfilled polygon mode the padded triangle's edges are drawn (measured, seed
+  // 161803 stream 1582: a strip of two, glPolygonMode(GL_LINE); repro list_incomplete_unfilled.txt).
+  if (it->second.incomplete && render_mode_ == GL_RENDER && unfilled() && !it->second.loopback)
+    deviations_.insert(kListIncompleteUnfilled);
   // Measured in GL_RENDER (repro list_quad_of_three_drawn.txt): a GL_QUADS or GL_QUAD_STRIP of
   // three, from glBegin/glEnd or a compiled glDrawArrays, draws the triangle of the three when the
   // list is called (not executing in GL_COMPILE_AND_EXECUTE, nor in immediate mode); GL_TRIANGLES of

@@ -60,6 +60,12 @@ inline constexpr const char* kListIncompleteFedBack =
     "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
     "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
 
+// Row 66 (docs/deviations.md), in GL_RENDER: named, not modelled.
+inline constexpr const char* kListIncompleteUnfilled =
+    "a display list holding a triangle too short to draw (a strip or GL_TRIANGLES of two vertices), called "
+    "under glPolygonMode GL_LINE or GL_POINT: Mesa's list playback pads it with its last vertex and its unfilled "
+    "stage draws the padded triangle's edges; soft draws nothing of it";
+
 // Row 72 (docs/deviations.md): named, not modelled (Context::note_node_mode).
 inline constexpr const char* kListModesFedBackFirst =
     "a display list's vertex list whose primitives (glBegin/glEnd or compiled draws, no state call between them) "
