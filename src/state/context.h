@@ -296,6 +296,7 @@ class Context {
   void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
   void close_store();               // the store is compiled into a vertex list: its repeats counted
   void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive
+  void forget_inside();  // run from a list: Context::node_ends reopens nothing
   void drop_open_primitive(bool keep_open, int drop);  // run from a list: a compiled draw inside the list's own glBegin
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
 

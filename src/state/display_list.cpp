@@ -47,6 +47,9 @@ void list_stray_end() {
 void list_node_split(bool draw, int copy, int joining) {
   if (Context* c = Context::current()) c->node_splits(draw, copy, joining);
 }
+void list_forget_inside() {
+  if (Context* c = Context::current()) c->forget_inside();
+}
 void list_drop_open_primitive(bool keep_open, int drop) {
   if (Context* c = Context::current()) c->drop_open_primitive(keep_open, drop);
 }
@@ -563,6 +566,10 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   // primitive and its glEnd ends it.
   const bool ends_open = lists_.open && !lists_.compiling_draw;
   const bool executing = &l == &lists_.held_back;
+  // A vertex sent after the wrap, before the draw: Mesa leaves its primitive as the vertex lists
+  // before left it no longer (measured: glColor3f, glVertex, glColor4f (the wrap), glVertex, then a
+  // draw of one: outside after glCallList; the rule not traced in the source): Context::node_ends.
+  if (&l == &lists_.compiling && ends_open && lists_.wrapped && lists_.vertices > 0) l.record<list_forget_inside>();
   // The vertices dropped: those sent since the primitive's glBegin or its last wrap (a wrap's first
   // vertex list drew those before it).
   if (ends_open) l.record<list_drop_open_primitive>(executing, lists_.vertices);
@@ -802,7 +809,11 @@ void Context::split_list_node(int joining) {
   // Bit 4: the wrapping attribute came after the open primitive's last vertex, whose values
   // (list_snapshot_last_vertex) the vertex list before the wrap hands the current values.
   const int last = joining && lists_.had_vertex && (lists_.trailing & joining) == joining ? 4 : 0;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last);
+  // Bit 8: the vertex list before the wrap holds an attribute besides the position, so it has current
+  // values to copy, and its copy (playback_copy_to_current) sets Mesa's CurrentExecPrimitive; one of
+  // positions alone returns before it (Context::node_ends).
+  const int current = lists_.attributes != 0 ? 8 : 0;
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current);
   note_vertexless_node();
   close_store();
 }
@@ -834,8 +845,10 @@ void Context::node_ends(bool draw, int loop, bool copy) {
   }
 }
 
+void Context::forget_inside() { lists_.node_inside = false; }
+
 void Context::node_splits(bool draw, int copy, int joining) {
-  const bool last = joining & 4;
+  const bool last = joining & 4, current = joining & 8;
   joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
@@ -844,7 +857,7 @@ void Context::node_splits(bool draw, int copy, int joining) {
   // this vertex list's last vertex's, not the wrapping attribute's (measured: glColor3f, glVertex,
   // glColor4f(0, 0, 0, 0) (the wrap), a compiled draw: GL_CURRENT_COLOR alpha 1 after glCallList;
   // repro list_draw_inside_begin_wrapped.txt).
-  node_values_ = current_values(), lists_.node_inside = in_begin_, lists_.node_inside_mode = prim_mode_;
+  node_values_ = current_values(), lists_.node_inside = in_begin_ && current, lists_.node_inside_mode = prim_mode_;
   if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
   if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
 }
