@@ -124,7 +124,8 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft, bool* mat
     if (n == "glEndList") compiling = false;
     if (!compiling) continue;
     const bool element_attributes = normal_array || color_array;
-    if (n == "glBegin") open = true, attribute = vertex = materials = false;
+    // A glBegin inside the list's glBegin is a compile error and begins nothing.
+    if (n == "glBegin" && !open) open = true, attribute = vertex = materials = false;
     else if (n == "glEnd" && open) {
       open = false;
       if (attribute && !vertex) {
