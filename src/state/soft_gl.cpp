@@ -131,6 +131,12 @@ int material_param_count(GLenum p) {
   return 0;
 }
 void APIENTRY MaterialValues(GLenum face, GLenum p, Floats<4> v) {
+  // While a list compiles, a bad face or pname is a compile error and nothing more: Mesa's vbo
+  // Materialfv returns before anything else, so what the list holds is not flushed (measured, seed
+  // 161803 stream 532: after a GL_COMPILE_AND_EXECUTE list's wrapped glBegin/glEnd the executing side
+  // stays inside the primitive; repro list_material_bad_face_no_flush.txt).
+  if (Context* c = C(); c && c->list_recording() && (!valid_face(face) || material_param_count(p) == 0))
+    return c->record_list_error(GL_INVALID_ENUM);
   LISTABLE_MATERIAL(MaterialValues, face, p, v);
   FWD(Materialfv(face, p, v.v));
 }
