@@ -337,14 +337,20 @@ WindowPolygon clip_and_map(const Vertex* prim, size_t count, const State& s, con
     if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) return {};
   }
   // Facing is decided before clipping, from the whole primitive, in window orientation.
-  bool back = false;
+  bool back = false, back_colours = false;
   if (!is_line && count >= 3) {
     back = back_facing_triangle(prim[0].clip, prim[1].clip, prim[2].clip, s);
     if (culled(back, s)) return {};
+    // Mesa's two-side stage takes a triangle of zero area as front-facing (gl_rules.h), clipped or
+    // not (measured, seed 271828 stream 2682: a degenerate quad from elements with a vertex outside
+    // the view volume fed back with the front colours; repro zero_area_two_side_clipped.txt).
+    const glm::dvec4 &a = prim[0].clip, &b = prim[1].clip, &c = prim[2].clip;
+    const double area = a.x * (b.y * c.w - c.y * b.w) - b.x * (a.y * c.w - c.y * a.w) + c.x * (a.y * b.w - b.y * a.w);
+    back_colours = back && area != 0;
   }
   if (back_facing) *back_facing = back;
-  return s.float_window ? clip_and_map_in<float>(prim, count, s, provoking, is_line, back, feedback)
-                        : clip_and_map_in<double>(prim, count, s, provoking, is_line, back, feedback);
+  return s.float_window ? clip_and_map_in<float>(prim, count, s, provoking, is_line, back_colours, feedback)
+                        : clip_and_map_in<double>(prim, count, s, provoking, is_line, back_colours, feedback);
 }
 
 namespace {

@@ -280,6 +280,7 @@ class Context {
   void note_vertexless_node();  // a vertex list ends: one with attributes and no vertex (kListVertexlessNode)
   void note_node_primitive(bool open);  // the open primitive ends, or a flush cuts it (kListTwoThenQuadCrash)
   void note_node_mode(GLenum mode, int vertices);  // a primitive's vertices in the open vertex list (kListModesFedBackFirst)
+  void close_node_modes();  // the open vertex list's draws as Mesa merges them (kListModesFedBackFirst, kListModesCrash)
   void node_begins();               // run from a list: a vertex list starts
   void node_ends(bool draw, int loop, bool copy);  // run from a list: it ends; a last primitive drawn from arrays copies
                                         // nothing, a closed line loop (loop: the attributes) replays its first vertex
@@ -291,6 +292,8 @@ class Context {
   void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
   void close_store();               // the store is compiled into a vertex list: its repeats counted
   void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive
+  void forget_inside();  // run from a list: Context::node_ends reopens nothing
+  void drop_open_primitive(bool keep_open, int drop);  // run from a list: a compiled draw inside the list's own glBegin
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
 
   // Texture coordinates, the edge flag, glRect, glHint, glInterleavedArrays (attributes.cpp).

@@ -47,6 +47,12 @@ void list_stray_end() {
 void list_node_split(bool draw, int copy, int joining) {
   if (Context* c = Context::current()) c->node_splits(draw, copy, joining);
 }
+void list_forget_inside() {
+  if (Context* c = Context::current()) c->forget_inside();
+}
+void list_drop_open_primitive(bool keep_open, int drop) {
+  if (Context* c = Context::current()) c->drop_open_primitive(keep_open, drop);
+}
 void list_error(GLenum e) {
   if (Context* c = Context::current()) c->record_error(e);
 }
@@ -383,7 +389,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   lists_.trailing = lists_.carry = 0, lists_.color_size = lists_.position_size = 0;
   lists_.shown = lists_.fallback = false, lists_.refill_error = false;
   lists_.wrap_copies = lists_.outside_attributes = 0, lists_.closing_loop = false, lists_.node_open = false;
-  lists_.shade_model = 0, lists_.node_first_mode = 0;
+  lists_.shade_model = 0, lists_.node_modes.clear();
   lists_.store_vertices.clear(), lists_.store_repeats = lists_.deduplicated = false;
 }
 
@@ -441,6 +447,10 @@ void Context::call_one_list(GLuint list) {
   // of two as a triangle with the second twice, an empty GL_LINE_LOOP alone as a line; GL_QUADS of
   // three, a strip of one and a polygon of two in one list crashed Mesa in glCallList.
   if (it->second.incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
+  // In GL_RENDER under an unfilled polygon mode the padded triangle's edges are drawn (measured, seed
+  // 161803 stream 1582: a strip of two, glPolygonMode(GL_LINE); repro list_incomplete_unfilled.txt).
+  if (it->second.incomplete && render_mode_ == GL_RENDER && unfilled() && !it->second.loopback)
+    deviations_.insert(kListIncompleteUnfilled);
   // Measured in GL_RENDER (repro list_quad_of_three_drawn.txt): a GL_QUADS or GL_QUAD_STRIP of
   // three, from glBegin/glEnd or a compiled glDrawArrays, draws the triangle of the three when the
   // list is called (not executing in GL_COMPILE_AND_EXECUTE, nor in immediate mode); GL_TRIANGLES of
@@ -450,6 +460,7 @@ void Context::call_one_list(GLuint list) {
   if (it->second.loopback && it->second.deduplicated) deviations_.insert(kListLoopbackDeduplicated);
   if (it->second.vertexless && !it->second.loopback) deviations_.insert(kListVertexlessNode);
   if (it->second.mixed_modes && !it->second.loopback && render_mode_ != GL_RENDER) deviations_.insert(kListModesFedBackFirst);
+  if (it->second.modes_crash && !it->second.loopback && render_mode_ != GL_RENDER) deviations_.insert(kListModesCrash);
   const bool outer = lists_.replaying_loopback;
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
@@ -484,20 +495,26 @@ void replay_call_list_offset(GLuint offset);
 }  // namespace
 
 void Context::CallLists(GLsizei n, GLenum type, const void* lists) {
-  if (type < GL_BYTE || type > GL_4_BYTES) return error(GL_INVALID_ENUM);
-  if (n < 0) return error(GL_INVALID_VALUE);
-  if (n == 0 || !lists) return;
-  // Compiled, the names are copied now and the list base read when the list runs.
+  const GLenum e = type < GL_BYTE || type > GL_4_BYTES ? GLenum(GL_INVALID_ENUM) : n < 0 ? GLenum(GL_INVALID_VALUE)
+                                                                                          : GLenum(GL_NO_ERROR);
+  // Compiled, the names are copied now and the list base read when the list runs. Mesa's save_CallLists
+  // flushes and compiles the call whatever its arguments: a bad type or a negative count raises its error
+  // when the list runs (and at once in GL_COMPILE_AND_EXECUTE, which executes it), not while compiling
+  // (measured, seed 271828 stream 1365, seed 161803 streams 471 and 1775: repro list_call_lists_bad_compiled.txt).
   if (DisplayList* l = list_recording()) {
     if (lists_.open) list_fallback();  // as glCallList (soft_gl.cpp)
     end_list_node();
-    for (GLsizei i = 0; i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
-    for (GLsizei i = 0; i < n && l == &lists_.compiling; ++i) l->calls.push_back(list_offset(type, lists, i));
+    if (e != GL_NO_ERROR) l->record<list_error>(e);
+    for (GLsizei i = 0; e == GL_NO_ERROR && lists && i < n; ++i) l->record<replay_call_list_offset>(list_offset(type, lists, i));
+    for (GLsizei i = 0; e == GL_NO_ERROR && lists && i < n && l == &lists_.compiling; ++i)
+      l->calls.push_back(list_offset(type, lists, i));
     lists_.outside_attributes = 0, lists_.shade_model = 0;
     if (lists_.mode == GL_COMPILE) return;
     run_held_back();
     fallen_back_run();
   }
+  if (e != GL_NO_ERROR) return error(e);
+  if (n == 0 || !lists) return;
   const bool outermost = !lists_.calling;
   if (outermost) begin_list_calls();
   const GLuint base = lists_.base;
@@ -537,9 +554,30 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (count < 0) e = GL_INVALID_VALUE;
   else if (!valid_primitive(mode)) e = primitive_error(mode);
   if (e != GL_NO_ERROR) return compile_error(l, e);
+  // Inside the list's own open glBegin Mesa's save_DrawArrays begins the draw's primitive there and its
+  // glEnd ends it: the list's primitive is left without an end and without its vertices (they precede
+  // the draw's start), so nothing of it is drawn, and the list is outside glBegin after the draw, where
+  // a glBegin is no error. Measured (seed 271828 stream 1376, repro list_draw_inside_begin.txt): GL_LINE_LOOP
+  // of two vertices, glDrawArrays(GL_QUAD_STRIP, 0, 0), then a GL_TRIANGLES: no error, the triangle alone
+  // fed back; with a draw of four the quad strip alone (row 72: two modes).
+  // GL_COMPILE_AND_EXECUTE's executing side replays the vertex list through immediate mode
+  // (vbo_loopback_vertex_list): the list's glBegin opens the primitive, empty; the draw's glBegin
+  // raises GL_INVALID_OPERATION there (measured at the flush, glEndList), its vertices join the open
+  // primitive and its glEnd ends it.
+  const bool ends_open = lists_.open && !lists_.compiling_draw;
+  const bool executing = &l == &lists_.held_back;
+  // A vertex sent after the wrap, before the draw: Mesa leaves its primitive as the vertex lists
+  // before left it no longer (measured: glColor3f, glVertex, glColor4f (the wrap), glVertex, then a
+  // draw of one: outside after glCallList; the rule not traced in the source): Context::node_ends.
+  if (&l == &lists_.compiling && ends_open && lists_.wrapped && lists_.vertices > 0) l.record<list_forget_inside>();
+  // The vertices dropped: those sent since the primitive's glBegin or its last wrap (a wrap's first
+  // vertex list drew those before it).
+  if (ends_open) l.record<list_drop_open_primitive>(executing, lists_.vertices);
+  if (ends_open && executing) l.record<list_error>(GL_INVALID_OPERATION);
+  if (ends_open && count == 0 && executing) l.record<list_end>();
+  if (ends_open && count == 0 && forms_format(l)) lists_.open = false, lists_.closing_loop = false;
   // A draw of no vertex is a primitive of Mesa's store too (save_DrawArrays begins it): its vertex
   // list's FLUSH_FOR_DRAW flushes the values pending when the list runs (Context::flush_pending).
-  // Inside the list's own glBegin it also ends that primitive on Mesa (not modelled).
   if (count == 0 && &l == &lists_.compiling && !lists_.open) start_list_node(true);
   if (count == 0) return;
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
@@ -572,7 +610,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     lists_.wrap_copies = 0, lists_.closing_loop = lists_.loop_restarted = false;
   }
   if (&l == &lists_.compiling) start_list_node(true), lists_.node_last_mode = 0;  // no pair across a draw (not measured)
-  l.record<list_begin>(mode);
+  if (!(ends_open && executing)) l.record<list_begin>(mode);
   lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) {
     compile_element(l, indices ? GLint(indices[k]) : first + k);
@@ -586,6 +624,25 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
+}
+
+// The last `drop` vertices of the open primitive are forgotten; it is ended too unless keep_open
+// (compile_elements).
+void Context::drop_open_primitive(bool keep_open, int drop) {
+  if (!in_begin_) return;
+  const auto shorten = [drop](auto& v) { v.resize(v.size() - std::min(v.size(), size_t(std::max(drop, 0)))); };
+  if (immediate_list_) {
+    shorten(list_corner_);
+    wrap_start_ = std::min(wrap_start_, list_corner_.size());
+  } else {
+    light_pending();  // the batch's slots index verts_
+    const size_t n = verts_.size();
+    shorten(verts_);
+    wrap_start_ = std::min(wrap_start_, verts_.size());
+    if (sink_materials_.size() == sink_verts_.size()) shorten(sink_materials_);
+    if (n == 0) shorten(sink_verts_);  // feedback and selection keep their vertices there
+  }
+  if (!keep_open) End();
 }
 
 void Context::stray_end() {
@@ -645,10 +702,36 @@ void Context::note_node_primitive(bool open) {
 // GL_COMPILE_AND_EXECUTE's own drawing, GL_RENDER. Named (row 72, a bug no program relies on): soft
 // feeds back every primitive.
 void Context::note_node_mode(GLenum mode, int vertices) {
-  if (vertices <= 0) return;
-  const GLenum family = mode == GL_LINE_STRIP ? GLenum(GL_LINES) : mode;
-  if (lists_.node_first_mode == 0) lists_.node_first_mode = family;
-  else if (lists_.node_first_mode != family) lists_.compiling.mixed_modes = true;
+  if (vertices > 0) lists_.node_modes.push_back(mode);
+}
+
+// The draws of the vertex list being closed, as compile_vertex_list (vbo_save_api.c) merges its
+// primitives: a GL_LINE_LOOP last in the vertex list becomes a GL_LINE_STRIP; a GL_LINE_STRIP becomes
+// GL_LINES where the draw before is GL_LINES or the primitive after a strip or lines; a primitive
+// joins the draw before where the modes are the same and not GL_LINE_LOOP, GL_TRIANGLE_FAN,
+// GL_QUAD_STRIP or GL_POLYGON. More than one mode among the draws: row 72. Measured (seed 271828
+// stream 817, repro list_modes_crash.txt): Mesa 22.3 segfaults in glCallList in feedback where a draw
+// after the second has another mode than the one before it (GL_LINE_LOOP, GL_LINE_LOOP,
+// GL_TRIANGLE_STRIP; three GL_LINE_LOOPs, the last a strip; GL_TRIANGLE_FAN, GL_TRIANGLE_FAN,
+// GL_LINES; GL_POLYGON, GL_POLYGON, GL_POINTS), not where only the second does (GL_POINTS,
+// GL_TRIANGLE_FAN, GL_TRIANGLE_FAN; two draws of two modes).
+void Context::close_node_modes() {
+  std::vector<GLenum>& m = lists_.node_modes;
+  if (!m.empty() && m.back() == GL_LINE_LOOP) m.back() = GL_LINE_STRIP;
+  std::vector<GLenum> draws;
+  for (size_t i = 0; i < m.size(); ++i) {
+    GLenum mode = m[i] == GL_LINE_STRIP ? GLenum(GL_LINES) : m[i];
+    const bool merge = !draws.empty() && draws.back() == mode && mode != GL_LINE_LOOP && mode != GL_TRIANGLE_FAN &&
+                       mode != GL_QUAD_STRIP && mode != GL_POLYGON;
+    const bool next_lines = i + 1 < m.size() && (m[i + 1] == GL_LINE_STRIP || m[i + 1] == GL_LINES);
+    if (m[i] == GL_LINE_STRIP && !merge && !next_lines) mode = GL_LINE_STRIP;
+    if (!merge) draws.push_back(mode);
+  }
+  for (size_t k = 1; k < draws.size(); ++k) {
+    if (draws[k] != draws[0]) lists_.compiling.mixed_modes = true;
+    if (k >= 2 && draws[k] != draws[k - 1]) lists_.compiling.modes_crash = true;
+  }
+  m.clear();
 }
 
 // Measured by the seed-8086 helper (repro list_vertexless_wrap_current.txt, seed 2026 stream 972):
@@ -669,7 +752,8 @@ void Context::note_vertexless_node() {
 void Context::end_list_node() {
   lists_.carry = 0;  // the flush empties the store's format (list_vertex_compiled)
   if (lists_.open) note_node_primitive(true);
-  lists_.node_last_mode = lists_.node_first_mode = 0;
+  close_node_modes();
+  lists_.node_last_mode = 0;
   note_vertexless_node();
   if (lists_.node_open)
     lists_.compiling.record<list_node_ends>(lists_.node_draw, !lists_.closing_loop ? 0
@@ -716,12 +800,20 @@ void Context::close_store() {
 // stream 701 shrunk), so nothing is put back in the middle of the primitive; one from glBegin copies
 // its values so far, the start of the next.
 void Context::split_list_node(int joining) {
-  lists_.node_last_mode = lists_.node_first_mode = 0;  // the open primitive's rest starts the next vertex list
+  close_node_modes();
+  lists_.node_last_mode = 0;  // the open primitive's rest starts the next vertex list
   // Whether the vertex list before the wrap copies its last vertex to the current values (an attribute
   // besides the position in its format, its last primitive from glBegin), and so leaves Mesa inside
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
   const int copy = lists_.node_draw || lists_.attributes == 0 ? 0 : lists_.open ? 2 : 1;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining);
+  // Bit 4: the wrapping attribute came after the open primitive's last vertex, whose values
+  // (list_snapshot_last_vertex) the vertex list before the wrap hands the current values.
+  const int last = joining && lists_.had_vertex && (lists_.trailing & joining) == joining ? 4 : 0;
+  // Bit 8: the vertex list before the wrap holds an attribute besides the position, so it has current
+  // values to copy, and its copy (playback_copy_to_current) sets Mesa's CurrentExecPrimitive; one of
+  // positions alone returns before it (Context::node_ends).
+  const int current = lists_.attributes != 0 ? 8 : 0;
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current);
   note_vertexless_node();
   close_store();
 }
@@ -729,8 +821,17 @@ void Context::split_list_node(int joining) {
 void Context::node_begins() {
   flush_pending(true);
   node_values_ = current_values();
+  lists_.node_inside = in_begin_, lists_.node_inside_mode = prim_mode_;
 }
 
+// A vertex list whose last primitive begun is a compiled draw copies nothing to the current values
+// (playback_copy_to_current is not called), so it leaves Mesa's CurrentExecPrimitive as the vertex
+// lists before it left it: inside a primitive a wrap cut (its first vertex list ends it not) even
+// where the list's glEnd ended it or a compiled draw inside it ended it, so that a glEnd the list
+// compiled after the draw raises nothing. Measured (seed 271828 stream 1376, repro
+// list_draw_inside_begin_wrapped.txt): glBegin(GL_POINTS), glColor3f, glVertex, glColor4f (the wrap),
+// then glDrawArrays of none or four (or glEnd, then the draw), then glEnd: no error, the point drawn;
+// without the wrap the last glEnd is GL_INVALID_OPERATION. Soft opens the primitive again, empty.
 void Context::node_ends(bool draw, int loop, bool copy) {
   if (lists_.replaying_loopback) {
     if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
@@ -738,15 +839,27 @@ void Context::node_ends(bool draw, int loop, bool copy) {
     if (loop & 2) color_ = lists_.loop_first_color;
   } else if (draw) {
     restore(node_values_);
+    if (lists_.node_inside && !in_begin_) Begin(lists_.node_inside_mode);
   } else if (copy) {
     lists_.mesa_inside = false;  // its last primitive ended in it
   }
 }
 
+void Context::forget_inside() { lists_.node_inside = false; }
+
 void Context::node_splits(bool draw, int copy, int joining) {
+  const bool last = joining & 4, current = joining & 8;
+  joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
-  if (!draw) node_values_ = current_values();
+  if (draw) return;
+  // The values a later vertex list that copies nothing (its last primitive a compiled draw) leaves:
+  // this vertex list's last vertex's, not the wrapping attribute's (measured: glColor3f, glVertex,
+  // glColor4f(0, 0, 0, 0) (the wrap), a compiled draw: GL_CURRENT_COLOR alpha 1 after glCallList;
+  // repro list_draw_inside_begin_wrapped.txt).
+  node_values_ = current_values(), lists_.node_inside = in_begin_ && current, lists_.node_inside_mode = prim_mode_;
+  if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
+  if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
 }
 
 // Mesa's flushes of the values a list left pending (the rule of the unmerged reading of vbo_save,

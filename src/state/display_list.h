@@ -60,12 +60,24 @@ inline constexpr const char* kListIncompleteFedBack =
     "draw), called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back a primitive padded with its last "
     "vertex, reads vertices it never stored, or crashes in glCallList; soft draws nothing of it";
 
+// Row 66 (docs/deviations.md), in GL_RENDER: named, not modelled.
+inline constexpr const char* kListIncompleteUnfilled =
+    "a display list holding a triangle too short to draw (a strip or GL_TRIANGLES of two vertices), called "
+    "under glPolygonMode GL_LINE or GL_POINT: Mesa's list playback pads it with its last vertex and its unfilled "
+    "stage draws the padded triangle's edges; soft draws nothing of it";
+
 // Row 72 (docs/deviations.md): named, not modelled (Context::note_node_mode).
 inline constexpr const char* kListModesFedBackFirst =
     "a display list's vertex list whose primitives (glBegin/glEnd or compiled draws, no state call between them) "
     "have more than one mode, called in GL_FEEDBACK or GL_SELECT: Mesa's list playback feeds back (or hits) only "
     "the primitives of its first mode, and crashes in glCallList where the mode changes twice; soft feeds back "
     "them all";
+
+// Row 72 (docs/deviations.md), its crash: named, not modelled (Context::close_node_modes).
+inline constexpr const char* kListModesCrash =
+    "a display list's vertex list whose draws, after Mesa's merging, change mode after the second draw (GL_LINE_LOOP, "
+    "GL_LINE_LOOP, GL_TRIANGLE_STRIP; GL_POINTS, GL_QUADS, GL_LINES), called in GL_FEEDBACK or GL_SELECT: Mesa 22.3 "
+    "segfaults in glCallList; soft feeds back every primitive";
 
 // Row 67 (docs/deviations.md): named, not modelled.
 inline constexpr const char* kListLoopbackDeduplicated =
@@ -125,7 +137,7 @@ class DisplayList {
   void replay() const;
   void clear() {
     bytes_.clear(), kept_.clear(), incomplete = false, loopback = false, deduplicated = false, padded_quad = false;
-    vertexless = false, mixed_modes = false, calls.clear();
+    vertexless = false, mixed_modes = false, modes_crash = false, calls.clear();
   }
   bool incomplete = false;  // holds a primitive too short to draw (kListIncompleteFedBack)
   bool padded_quad = false;  // a GL_QUADS or GL_QUAD_STRIP of three vertices (kListPaddedQuadDrawn)
@@ -140,6 +152,7 @@ class DisplayList {
   bool deduplicated = false;  // a vertex list of it lost repeated vertices, compiled before any loopback mark
   bool vertexless = false;  // a vertex list of it has attributes and no vertex (kListVertexlessNode)
   bool mixed_modes = false;  // a vertex list of it draws primitives of two modes (kListModesFedBackFirst)
+  bool modes_crash = false;  // ... and changes mode after its second draw (kListModesCrash)
   std::vector<GLuint> calls;  // the names its glCallList and glCallLists compiled (without the list base)
   bool empty() const { return bytes_.empty(); }
 
@@ -224,9 +237,13 @@ struct ListState {
   // it has there (kListTwoThenQuadCrash, Context::note_node_primitive).
   GLenum node_last_mode = 0;
   int node_last_count = 0;
-  // The mode of the open vertex list's first primitive with a vertex (0: none yet), GL_LINE_STRIP
-  // taken as GL_LINES (Context::note_node_mode).
-  GLenum node_first_mode = 0;
+  // The modes of the open vertex list's primitives with a vertex, in order (Context::note_node_mode,
+  // close_node_modes).
+  std::vector<GLenum> node_modes;
+  // Replaying: whether Mesa's immediate mode was inside a primitive (and its mode) when the vertex
+  // list began, as the vertex lists before it left it (Context::node_ends).
+  bool node_inside = false;
+  GLenum node_inside_mode = 0;
   // Compiling: the vertices of the store since it was last compiled, as Mesa's compiler compares them
   // (the bits of the position, normal and colour as floats), whether one repeats, and whether a vertex
   // list with a repeat was compiled before the list was marked for loopback (kListLoopbackDeduplicated).

@@ -38,7 +38,13 @@ void Context::Color(double r, double g, double b, double a, int components) {
       color_active_ = components;
       if (in_begin_) deviations_.insert(kColorShrinkInPrimitive);  // docs/deviations.md row 44
     }
-    else if (components == 3) a = color_.a;
+    // A display list's own glBegin/glEnd stores its colours through Mesa's save path, whose
+    // fixup_vertex (vbo_save_api.c) sets the active size at every call: a glColor3 after a glColor4
+    // there stores alpha 1 (measured, seed 271828 stream 156: glColor3fv, glColor4fv(0, 0, 0, 0),
+    // glColor3f, glVertex in a list's GL_POINTS reads back alpha 1, in the current colour and the
+    // material colour material tracks; repro list_color3_after_color4_alpha.txt). The list's
+    // vertices replay here inside its glBegin.
+    else if (components == 3 && !(lists_.depth > 0 && in_begin_)) a = color_.a;
   }
   color_ = {r, g, b, a};
   if (in_begin_ && !color_varies_) color_varies_ = true, constants_dirty_ = true;

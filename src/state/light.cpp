@@ -264,6 +264,14 @@ void Context::flush_current() {
   if (spec_) return;
   if (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()) vertices_kept_ = true;
   copy_pending();
+  // Inside glCallList, a value a list left pending (Context::flush_pending) is copied here as at a
+  // vertex list's first flush, and NeedFlush left as ~FLUSH_UPDATE_CURRENT: the next vertex list's
+  // FLUSH_FOR_DRAW forgets it. Measured (seed 271828 stream 936, repro list_pending_flushed_by_enable.txt):
+  // a list's glColor4fv(0, 0, 0, 0), glEnable(GL_COLOR_MATERIAL), then glBegin, glColor3ub, glVertex,
+  // glEnd reads back alpha 1 (the vertex list's), where glEnable(GL_LIGHTING) (no FLUSH_CURRENT)
+  // leaves the pending 0.
+  if (lists_.calling && lists_.need_update && !lists_.replaying_loopback && !lists_.mesa_inside)
+    apply_pending(), lists_.need_update = false, lists_.stored_bit = true;
 }
 
 void Context::flush_stored() {

@@ -107,6 +107,18 @@ void Assembly::note_smooth() {
   if ((m == GL_LINES || m == GL_LINE_STRIP || m == GL_LINE_LOOP) && two && c_.enabled_state(GL_LINE_SMOOTH) == 1)
     c_.deviations_.insert(kLineSmooth);
   if (m == GL_POINTS && any && c_.enabled_state(GL_POINT_SMOOTH) == 1) c_.deviations_.insert(kPointSmooth);
+  // Polygons drawn as lines or points (glPolygonMode) go through the same antialiasing stages: a
+  // degenerate triangle's edges of length 0 as dots (measured, seed 161803 streams 980 and 2648:
+  // glPolygonMode(GL_LINE) with GL_LINE_SMOOTH, a strip of one repeated index; repro
+  // polygon_mode_line_smooth.txt).
+  const bool polygon = m == GL_TRIANGLES || m == GL_TRIANGLE_STRIP || m == GL_TRIANGLE_FAN || m == GL_QUADS ||
+                       m == GL_QUAD_STRIP || m == GL_POLYGON;
+  if (polygon && any) {
+    const GLenum* pm = c_.polygon_mode_;
+    if ((pm[0] == GL_LINE || pm[1] == GL_LINE) && c_.enabled_state(GL_LINE_SMOOTH) == 1) c_.deviations_.insert(kLineSmooth);
+    if ((pm[0] == GL_POINT || pm[1] == GL_POINT) && c_.enabled_state(GL_POINT_SMOOTH) == 1)
+      c_.deviations_.insert(kPointSmooth);
+  }
 }
 
 // Most triangles lie inside the view volume: their vertices map to the window once, however many
@@ -200,7 +212,15 @@ bool Assembly::clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, c
   prim_.push_back(a);
   prim_.push_back(b);
   // Feedback reports each vertex's own colour (Mesa does not flatten there), but for the ends
-  // that clipping makes (clip_and_map).
+  // that clipping makes (clip_and_map), and where the draw module's pipeline holds its flatshade
+  // stage: with flat shading and a polygon mode other than GL_FILL on either face, whose unfilled
+  // stage asks for it (draw_pipe_validate.c, precalc_flat), lines too are fed back with the
+  // provoking vertex's colours. Measured (seed 161803 stream 1479, repro feedback_flat_line_unfilled.txt):
+  // a flat line strip under glPolygonMode(GL_POINT) fed back with the first vertex's alpha 0 (the
+  // provoking vertex's), 0.125 (its own) without the glPolygonMode.
+  if (feedback_ && rs_.flat && kind != GL_POINT_TOKEN && c_.unfilled())
+    for (raster::Vertex& v : prim_)
+      v.front = provoking.front, v.back = provoking.back, v.front_sec = provoking.front_sec, v.back_sec = provoking.back_sec;
   raster::ClipTemps* temps = feedback_ ? &c_.clip_temps_ : nullptr;
   const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &provoking, true, nullptr, temps);
   if (feedback_ && c_.render_mode_ == GL_FEEDBACK && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);

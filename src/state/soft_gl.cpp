@@ -131,6 +131,12 @@ int material_param_count(GLenum p) {
   return 0;
 }
 void APIENTRY MaterialValues(GLenum face, GLenum p, Floats<4> v) {
+  // While a list compiles, a bad face or pname is a compile error and nothing more: Mesa's vbo
+  // Materialfv returns before anything else, so what the list holds is not flushed (measured, seed
+  // 161803 stream 532: after a GL_COMPILE_AND_EXECUTE list's wrapped glBegin/glEnd the executing side
+  // stays inside the primitive; repro list_material_bad_face_no_flush.txt).
+  if (Context* c = C(); c && c->list_recording() && (!valid_face(face) || material_param_count(p) == 0))
+    return c->record_list_error(GL_INVALID_ENUM);
   LISTABLE_MATERIAL(MaterialValues, face, p, v);
   FWD(Materialfv(face, p, v.v));
 }
@@ -172,13 +178,17 @@ Floats<16, GLdouble> matrix_values(const GLfloat* m) {
 }
 void APIENTRY LoadMatrixd(const GLdouble* m) { LoadMatrixValues(matrix_values(m)); }
 void APIENTRY LoadMatrixf(const GLfloat* m) { LoadMatrixValues(matrix_values(m)); }
-void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { LISTABLE(Materialf, f, p, v); FWD(Materialf(f, p, v)); }
+// glMaterialf and glMateriali reach Mesa's glMaterialfv (its loopback): inside a list's glBegin they
+// enter the vertex store as it does, not a state call's flush (measured, seed 161803 stream 2269:
+// glMaterialf(GL_FRONT, GL_SHININESS) inside a list's glBegin raised nothing when the list ran, soft
+// GL_INVALID_OPERATION; repro list_materialf_inside_begin.txt). (param, 0, 0, 0), as Context::Materialf.
+void APIENTRY Materialf(GLenum f, GLenum p, GLfloat v) { MaterialValues(f, p, {{v, 0, 0, 0}}); }
 void APIENTRY Materialfv(GLenum f, GLenum p, const GLfloat* v) {
   Floats<4> c{};
   std::copy(v, v + material_param_count(p), c.v);
   MaterialValues(f, p, c);
 }
-void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { LISTABLE(Materiali, f, p, v); FWD(Materiali(f, p, v)); }
+void APIENTRY Materiali(GLenum f, GLenum p, GLint v) { MaterialValues(f, p, {{GLfloat(v), 0, 0, 0}}); }
 void APIENTRY MatrixMode(GLenum m) { LISTABLE(MatrixMode, m); FWD(MatrixMode(m)); }
 void APIENTRY MultMatrixd(const GLdouble* m) { MultMatrixValues(matrix_values(m)); }
 void APIENTRY MultMatrixf(const GLfloat* m) { MultMatrixValues(matrix_values(m)); }

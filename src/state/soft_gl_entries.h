@@ -35,9 +35,9 @@ void APIENTRY MultMatrixValues(Floats<16, GLdouble> m);
 // state call first executes the vertex-stream calls held back, then itself; a vertex-stream call
 // (glBegin, glVertex, glColor ...) is held back: Mesa's list keeps those vertices in its vertex
 // store and draws them at its next flush, which also comes when an attribute first appears after
-// a vertex of an open primitive (its vertex format grows); glMaterialfv and glMaterialiv execute
-// at once without that flush, where glMaterialf and glMateriali are state calls (glCallList:
-// soft_gl.cpp). Measured: docs/deviations.md row 50.
+// a vertex of an open primitive (its vertex format grows); glMaterialfv and glMaterialiv (and
+// glMaterialf and glMateriali, which reach them: soft_gl.cpp) execute at once without that flush.
+// Measured: docs/deviations.md row 50.
 enum class ListKind { State, Vertex, Material };
 
 // Whether two entry points are the same one (of any signatures).
