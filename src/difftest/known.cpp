@@ -76,12 +76,15 @@ bool call_list_and_wrap(const Stream& s, const SideResult& soft, size_t end_list
     // glArrayElement sends the enabled arrays' attributes before its vertex (seed 271828 stream 1135: a
     // glArrayElement with the colour array on after three glVertex in a GL_LINES wraps, the colour new).
     const int attribute = element ? (normal_array ? 1 : 0) | (color_array ? 2 : 0)
-                          : starts(n, "glNormal3") ? 1 : starts(n, "glColorPointer") ? 0 : starts(n, "glColor") ? 2
+                          : starts(n, "glNormal3") ? 1 : starts(n, "glColor3") || starts(n, "glColor4") ? 2
                           : starts(n, "glTexCoord") ? 4 : starts(n, "glEdgeFlag") ? 8 : 0;
     // A colour growing from 3 to 4 components after a vertex wraps the store too (row 64's kind; measured,
     // seed 271828 stream 868: glColor3fv, glVertex2f, glColor4f in a GL_POLYGON). A position growing does
     // not crash (measured: glVertex2f then glVertex3f in a GL_POLYGON).
-    const int size = attribute & 2 ? (element ? array_color_size : starts(n, "glColor4") ? 4 : 3) : 0;
+    // Mesa's vbo takes every glColor3 but glColor3f/fv as four components, alpha 1 (seed 577215:
+    // glColor3fv, a vertex, glColor3ub grows the colour; repro list_colour3ub_grows_wrap_crash).
+    const bool three = n == "glColor3f" || n == "glColor3fv";
+    const int size = attribute & 2 ? (element ? array_color_size : three ? 3 : 4) : 0;
     const bool grows = (attribute & 2) && color_size > 0 && size > color_size;
     if (attribute & 2) color_size = std::max(color_size, size);
     if (n == "glBegin") open = true, vertices = seen = color_size = 0, mode = GLenum(s[i].args[0].num);
