@@ -17,6 +17,21 @@ bool any_call(const Stream& s, int upto, Pred pred) {
 }
 
 bool is(const Call& c, const char* name) { return name_of(c) == name; }
+bool starts(const std::string& n, const char* prefix) { return n.rfind(prefix, 0) == 0; }
+
+// The client arrays on, as the glEnableClientState / glDisableClientState calls soft took (ok: no
+// error) left them.
+struct ArraysOn {
+  bool vertex = false, normal = false, color = false;
+  void follow(const std::string& n, const Call& c, bool ok) {
+    if ((n != "glEnableClientState" && n != "glDisableClientState") || !ok) return;
+    const auto a = GLenum(c.args[0].num);
+    const bool on = n == "glEnableClientState";
+    if (a == GL_VERTEX_ARRAY) vertex = on;
+    if (a == GL_NORMAL_ARRAY) normal = on;
+    if (a == GL_COLOR_ARRAY) color = on;
+  }
+};
 
 
 
@@ -53,29 +68,22 @@ bool after_mesa_applied(const Stream& s, const Mismatch& m, const SideResult& me
 // from soft's errors (Mesa's side crashed): a glNewList soft refused opened nothing.
 bool call_list_and_wrap(const Stream& s, const SideResult& soft, size_t end_list) {
   bool compiling = false, open = false, called = false, wrapped = false;
-  bool vertex_array = false, normal_array = false, color_array = false;
+  ArraysOn arrays;
   int array_color_size = 4;    // glColorPointer's size
   int vertices = 0, seen = 0;  // in the open primitive: its vertices, the attributes sent (bits)
   int color_size = 0;          // the colour's components in the open primitive (0: none sent)
   GLenum mode = 0;
-  auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
   for (size_t i = 0; i < end_list && i < s.size(); ++i) {
     const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
     const std::string& n = name_of(s[i]);
-    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok) {
-      const GLenum a = GLenum(s[i].args[0].num);
-      const bool on = n == "glEnableClientState";
-      if (a == GL_VERTEX_ARRAY) vertex_array = on;
-      if (a == GL_NORMAL_ARRAY) normal_array = on;
-      if (a == GL_COLOR_ARRAY) color_array = on;
-    }
+    arrays.follow(n, s[i], ok);
     if (n == "glColorPointer" && ok) array_color_size = int(s[i].args[0].num);
     if (n == "glNewList" && ok && !compiling) compiling = true, open = called = wrapped = false;
     if (!compiling) continue;
     const bool element = n == "glArrayElement";
     // glArrayElement sends the enabled arrays' attributes before its vertex (seed 271828 stream 1135: a
     // glArrayElement with the colour array on after three glVertex in a GL_LINES wraps, the colour new).
-    const int attribute = element ? (normal_array ? 1 : 0) | (color_array ? 2 : 0)
+    const int attribute = element ? (arrays.normal ? 1 : 0) | (arrays.color ? 2 : 0)
                           : starts(n, "glNormal3") ? 1 : starts(n, "glColor3") || starts(n, "glColor4") ? 2
                           : starts(n, "glTexCoord") ? 4 : starts(n, "glEdgeFlag") ? 8 : 0;
     // A colour growing from 3 to 4 components after a vertex wraps the store too (row 64's kind; measured,
@@ -98,7 +106,7 @@ bool call_list_and_wrap(const Stream& s, const SideResult& soft, size_t end_list
       }
       seen |= attribute;
       // A glVertex sends a vertex; a glArrayElement only with the vertex array on.
-      if (element ? vertex_array : !attribute) ++vertices;
+      if (element ? arrays.vertex : !attribute) ++vertices;
     }
   }
   return compiling && called && (wrapped || open);
@@ -110,23 +118,17 @@ bool call_list_and_wrap(const Stream& s, const SideResult& soft, size_t end_list
 // off and the normal or colour array on; -1 if none. Which client-state calls took effect is read
 // from soft's errors.
 int vertexless_list_primitive(const Stream& s, const SideResult& soft, bool* material = nullptr) {
-  bool compiling = false, open = false, vertex_array = false, normal_array = false, color_array = false;
+  bool compiling = false, open = false;
+  ArraysOn arrays;
   bool attribute = false, vertex = false, materials = false;
-  auto starts = [](const std::string& n, const char* p) { return n.rfind(p, 0) == 0; };
   for (size_t i = 0; i < s.size(); ++i) {
     const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
     const std::string& n = name_of(s[i]);
-    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok) {
-      const GLenum a = GLenum(s[i].args[0].num);
-      const bool on = n == "glEnableClientState";
-      if (a == GL_VERTEX_ARRAY) vertex_array = on;
-      if (a == GL_NORMAL_ARRAY) normal_array = on;
-      if (a == GL_COLOR_ARRAY) color_array = on;
-    }
+    arrays.follow(n, s[i], ok);
     if (n == "glNewList" && ok && !compiling) compiling = true, open = false;
     if (n == "glEndList") compiling = false;
     if (!compiling) continue;
-    const bool element_attributes = normal_array || color_array;
+    const bool element_attributes = arrays.normal || arrays.color;
     // A glBegin inside the list's glBegin is a compile error and begins nothing.
     if (n == "glBegin" && !open) open = true, attribute = vertex = materials = false;
     else if (n == "glEnd" && open) {
@@ -136,12 +138,12 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft, bool* mat
         return int(i);
       }
     } else if (open && starts(n, "glVertex") && n != "glVertexPointer") vertex = true;  // the pointer is client state
-    else if (open && n == "glArrayElement") attribute |= element_attributes, vertex |= vertex_array;
+    else if (open && n == "glArrayElement") attribute |= element_attributes, vertex |= arrays.vertex;
     else if (open && (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord"))) attribute = true;
     // A glMaterial there too (measured, seed 161803 stream 2269: glMaterialf(GL_FRONT, GL_SHININESS, 0)
     // alone in a list's GL_POINTS reads back 1.5e16; repro list_materialf_inside_begin.txt).
     else if (open && starts(n, "glMaterial")) attribute = materials = true;
-    else if (!open && (n == "glDrawArrays" || n == "glDrawElements") && !vertex_array && element_attributes &&
+    else if (!open && (n == "glDrawArrays" || n == "glDrawElements") && !arrays.vertex && element_attributes &&
              s[i].args[n == "glDrawArrays" ? 2 : 1].num > 0)
       return int(i);
   }
@@ -171,14 +173,14 @@ bool fed_back_at(const Stream& s, size_t at) {
 // draws: a glBegin/glEnd (glVertex, or glArrayElement with the vertex array on) or a compiled
 // glDrawArrays (its count, or no vertex array).
 bool incomplete_list_primitive(const Stream& s, const SideResult& soft, size_t at) {
-  bool compiling = false, open = false, vertex_array = false;
+  bool compiling = false, open = false;
+  ArraysOn arrays;
   GLenum mode = 0;
   int vertices = 0;
   for (size_t i = 0; i < at && i < s.size(); ++i) {
     const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
     const std::string& n = name_of(s[i]);
-    if ((n == "glEnableClientState" || n == "glDisableClientState") && ok && GLenum(s[i].args[0].num) == GL_VERTEX_ARRAY)
-      vertex_array = n == "glEnableClientState";
+    arrays.follow(n, s[i], ok);
     if (n == "glNewList" && ok && !compiling) compiling = true, open = false;
     if (n == "glEndList") compiling = false;
     if (!compiling) continue;
@@ -186,9 +188,9 @@ bool incomplete_list_primitive(const Stream& s, const SideResult& soft, size_t a
     else if (n == "glEnd" && open) {
       open = false;
       if (vertices < state::fewest_vertices(mode)) return true;
-    } else if (open && (n.rfind("glVertex", 0) == 0 || (n == "glArrayElement" && vertex_array))) ++vertices;
+    } else if (open && (starts(n, "glVertex") || (n == "glArrayElement" && arrays.vertex))) ++vertices;
     else if (!open && n == "glDrawArrays" && ok &&
-             (!vertex_array || s[i].args[2].num < state::fewest_vertices(GLenum(s[i].args[0].num))))
+             (!arrays.vertex || s[i].args[2].num < state::fewest_vertices(GLenum(s[i].args[0].num))))
       return true;
   }
   return false;
