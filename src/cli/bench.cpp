@@ -3,6 +3,8 @@
 // ratio, not a lone time.
 #include <sys/resource.h>
 
+#include <cstdlib>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -11,11 +13,26 @@
 #include <sstream>
 
 #include "cli/common.h"
+#include "gl/dispatch.h"
 #include "raster/wide/kernels.h"
 #include "simd/target.h"
 #include "state/context.h"
 
 namespace ffc::cli {
+
+// Mesa's GALLIUM_OVERRIDE_CPU_CAPS value (util/u_cpu_detect.c) that leaves llvmpipe the
+// instructions of one of soft's targets: what llvmpipe has on a CPU whose best target that is.
+// "" for the best x86 target (nothing to take away); throws where Mesa has no such override.
+static std::string mesa_caps_for(const std::string& target) {
+#if defined(__x86_64__) || defined(__i386__)
+  if (target == "avx512") return "";
+  if (target == "avx2") return "avx";  // clears AVX-512 only: AVX2 and FMA stay
+  if (target == "sse4") return "sse4.1";  // clears AVX and with it AVX2 and FMA
+  if (target == "ssse3") return "ssse3";  // clears SSE4.1
+  if (target == "scalar") return "sse2";  // x86-64's baseline, which soft's scalar loops also use
+#endif
+  throw std::invalid_argument("--mesa-isa same: Mesa offers no CPU override matching soft's target '" + target + "' here");
+}
 
 void add_bench(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Median time per frame of a scene on each backend, and the speed-up");
@@ -44,6 +61,12 @@ void add_bench(CLI::App& app) {
                   "speed-up over the runs")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
+  auto mesa_isa = std::make_shared<std::string>("native");
+  cmd->add_option("--mesa-isa", *mesa_isa,
+                  "native: llvmpipe uses every instruction the CPU has; same: only those of soft's SIMD target "
+                  "(FFCOMPAT_SIMD), as on a CPU whose best target that is (sets GALLIUM_OVERRIDE_CPU_CAPS)")
+      ->check(CLI::IsMember({"native", "same"}))
+      ->capture_default_str();
   cmd->add_flag("--json", *json, "Print {median_ms: {backend: ms}, speedup, ...}");
   cmd->callback([=] {
     const scene::Description d = opts->description();
@@ -59,12 +82,27 @@ void add_bench(CLI::App& app) {
       names.push_back(n);
     }
     if (names.empty()) throw std::invalid_argument("--backends: no backend named (" + choices + ")");
+    // Mesa reads its CPU caps once, when its first context is made: set before that.
+    simd::configure_from_environment();
+    const std::string soft_target = simd::vector_target() ? simd::current() : "scalar";
+    if (*mesa_isa == "same") {
+      if (std::find(names.begin(), names.end(), "mesa") == names.end())
+        throw std::invalid_argument("--mesa-isa same: no mesa in --backends");
+      const std::string caps = mesa_caps_for(soft_target);
+      if (caps.empty()) unsetenv("GALLIUM_OVERRIDE_CPU_CAPS");
+      else setenv("GALLIUM_OVERRIDE_CPU_CAPS", caps.c_str(), 1);
+    }
+    std::string mesa_renderer;
     nlohmann::json medians = nlohmann::json::object(), all = nlohmann::json::object(), alloc_json = nlohmann::json::object();
     std::vector<std::unique_ptr<backends::Backend>> backends;
     for (const std::string& name : names) {
       backends.push_back(backends::make(name));
       backends.back()->begin(d.width, d.height);
       if (*threads > 0 && name != "mesa") state::Context::current()->set_threads(*threads);
+      if (name == "mesa" && ffc_glGetString) {
+        const GLubyte* r = ffc_glGetString(GL_RENDERER);
+        if (r) mesa_renderer = reinterpret_cast<const char*>(r);
+      }
       issue();  // warm-up: Mesa compiles its fixed-function programs on the first frame
       (void)backends.back()->read();
     }
@@ -143,7 +181,13 @@ void add_bench(CLI::App& app) {
         j["speedup_spread"] = {{"median", sorted[sorted.size() / 2]}, {"min", sorted.front()}, {"max", sorted.back()}};
       }
     }
-    if (median.count("mesa")) add_platform(j, "mesa");
+    if (median.count("mesa")) {
+      add_platform(j, "mesa");
+      // llvmpipe's renderer string names its vector width ("llvmpipe (LLVM 15.0.6, 512 bits)")
+      j["mesa_renderer"] = mesa_renderer;
+      const char* caps = std::getenv("GALLIUM_OVERRIDE_CPU_CAPS");
+      j["mesa_cpu_caps"] = caps && *caps ? caps : "native";
+    }
     if (*json) return print_json(j);
     std::printf("%-12s %12s %18s\n", "backend", "median ms", "allocations/frame");
     for (const auto& n : names) std::printf("%-12s %12.3f %18.1f\n", n.c_str(), median[n], alloc_json[n].get<double>());
@@ -155,6 +199,8 @@ void add_bench(CLI::App& app) {
       std::printf("speedup (mesa / soft): %.2fx\n", j["speedup"].get<double>());
     std::printf("%d frames each in blocks of %d, %dx%d; peak RSS %.0f MB; soft's kernels: %s\n", *frames, *block, d.width,
                 d.height, ru.ru_maxrss / 1024.0, kernels.c_str());
+    if (j.contains("mesa_renderer"))
+      std::printf("mesa: %s, CPU caps %s\n", mesa_renderer.c_str(), j["mesa_cpu_caps"].get<std::string>().c_str());
   });
 }
 

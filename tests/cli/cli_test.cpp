@@ -289,6 +289,28 @@ TEST(Cli, BenchRunsReportEachRunAndTheSpread) {
   EXPECT_NE(ffcompat("bench --scene cube --frames 2 --runs 0").status, 0);
 }
 
+// --mesa-isa same gives llvmpipe only the instructions of soft's target (Mesa's
+// GALLIUM_OVERRIDE_CPU_CAPS), and llvmpipe's renderer string shows the vector width it then uses:
+// 128 bits for SSE4. Native is the default; a value that names nothing, or same without Mesa, is
+// refused.
+TEST(Cli, BenchMesaIsaSameRestrictsLlvmpipeToSoftsTarget) {
+#if defined(__x86_64__)
+  const std::vector<std::string> targets = ffc::simd::available();
+  if (std::find(targets.begin(), targets.end(), "sse4") == targets.end()) GTEST_SKIP() << "no SSE4 here";
+  const Result same = ffcompat("bench --scene cube --frames 1 --backends mesa,soft --mesa-isa same --json", "FFCOMPAT_SIMD=sse4");
+  ASSERT_EQ(same.status, 0);
+  const auto j = nlohmann::json::parse(same.out);
+  EXPECT_EQ(j["soft_kernels"], "sse4");
+  EXPECT_EQ(j["mesa_cpu_caps"], "sse4.1");
+  EXPECT_NE(j["mesa_renderer"].get<std::string>().find("128 bits"), std::string::npos) << j["mesa_renderer"];
+  const Result native = ffcompat("bench --scene cube --frames 1 --backends mesa,soft --json", "FFCOMPAT_SIMD=sse4");
+  ASSERT_EQ(native.status, 0);
+  EXPECT_EQ(nlohmann::json::parse(native.out)["mesa_cpu_caps"], "native");
+#endif
+  expect_refused("bench --scene cube --frames 1 --backends soft --mesa-isa same", "no mesa in --backends");
+  EXPECT_NE(ffcompat("bench --scene cube --frames 1 --mesa-isa sse9").status, 0);
+}
+
 #ifdef FFCOMPAT_WITH_GLSL
 // The GLSL backend keeps its buffers, lists and uniform values: after the warm-up frame (programs
 // compiled, states seen) a frame allocates nothing, on each draw path, with two programs a frame
