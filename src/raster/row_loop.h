@@ -120,12 +120,82 @@ inline unsigned cover_2x2(const Triangle& t) {
 #endif
 }
 
+// a * b + c rounded once, as std::fma, for a and b fixed along a row (depth's second step,
+// z2 Y_down + (...)). Without a fused instruction (x86 before FMA3: std::fma is a library call
+// there) in double, the product made once: it is exact (24 + 24 significand bits fit in 53), the
+// sum is rounded once, and rounding that to float gives the fused result unless the double lies
+// exactly halfway between two floats or in float's subnormal range (then std::fma decides), as
+// wide/kernels-inl.h FusedMulAdd does a vector at a time.
+struct FusedRowScalar {
+  float a, b;
+#if FFCOMPAT_X86 && !defined(__FMA__)
+  double ab;
+  FusedRowScalar(float a_, float b_) : a(a_), b(b_), ab(double(a_) * double(b_)) {}
+  float operator()(float c) const {
+    const double s = ab + double(c);
+    uint64_t bits;
+    std::memcpy(&bits, &s, 8);
+    const bool halfway = (bits & ((uint64_t(1) << 29) - 1)) == uint64_t(1) << 28;
+    if (__builtin_expect(halfway || (std::fabs(s) < 0x1p-125 && s != 0), 0)) return std::fma(a, b, c);
+    return float(s);
+  }
+#else
+  FusedRowScalar(float a_, float b_) : a(a_), b(b_) {}
+  float operator()(float c) const { return std::fma(a, b, c); }
+#endif
+};
+
+// The plane terms of a column that depend on X alone: depth's first fused step fma(z1, X, z0),
+// (iw0 + iw1 X) and each colour's (c0 + cx X) (X = px + 0.5; depth at the column px).
+struct ColumnTerms {
+  alignas(32) float z, iw, pad[2], c[4];
+};
+inline ColumnTerms column_terms(const Triangle& t, int px) {
+  ColumnTerms k{};
+  const float fx = float(px + 0.5);
+  k.z = std::fma(t.z[1], float(px), t.z[0]);
+  k.iw = t.inv_w[0] + t.inv_w[1] * fx;
+  for (int i = 0; i < 4; ++i) k.c[i] = t.c0[i] + t.cx[i] * fx;
+  return k;
+}
+
+// A large triangle's column terms, each column's made once for the rows this thread draws (they
+// depend on the column alone, so the same values), for its first kCachedColumns columns; rows
+// reaching further make their own (covers). The storage is the caller's (its stack: a heap
+// buffer would be allocated during some frame).
+inline constexpr int kCachedColumns = 1024;
+class ColumnCache {
+ public:
+  ColumnCache(const Triangle& t, ColumnTerms* store) : t_(t), store_(store) {}
+  bool covers(int to) const { return to - t_.xmin < kCachedColumns; }
+  // Columns from..to (within the triangle's box, covers(to)), made where they are not yet.
+  const ColumnTerms* at(int from, int to) {
+    if (lo_ > hi_) {
+      make(from, to), lo_ = from, hi_ = to;
+    } else {
+      if (from < lo_) make(from, lo_ - 1), lo_ = from;
+      if (to > hi_) make(hi_ + 1, to), hi_ = to;
+    }
+    return store_ + (from - t_.xmin);
+  }
+
+ private:
+  void make(int from, int to) {
+    for (int px = from; px <= to; ++px) store_[px - t_.xmin] = column_terms(t_, px);
+  }
+  const Triangle& t_;
+  ColumnTerms* store_;
+  int lo_ = 0, hi_ = -1;
+};
+
 // Pixels lo..hi of row py, covered by t (planes filled), drawn one by one: depth test, colour.
 // Each pixel's values come from the planes at its own centre, (p0 + px X) + py Y, never stepped
 // from a neighbour, so that the vector kernels (wide/kernels.h) compute the same bits a vector of
-// pixels at a time. Returns the drawn pixels whose colour was not finite.
+// pixels at a time. The column terms come from `cols` (cols[k] for pixel lo + k) where given, else
+// are made here. Returns the drawn pixels whose colour was not finite.
 template <DepthMode D>
-inline uint64_t span_scalar(Framebuffer& fb, const Triangle& t, int py, int lo, int hi, GLenum depth_func) {
+inline uint64_t span_scalar(Framebuffer& fb, const Triangle& t, int py, int lo, int hi, GLenum depth_func,
+                            const ColumnTerms* cols = nullptr) {
   uint64_t nonfinite = 0;
 #if FFCOMPAT_X86
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1), k255 = _mm_set1_ps(255);
@@ -133,8 +203,9 @@ inline uint64_t span_scalar(Framebuffer& fb, const Triangle& t, int py, int lo, 
   // py Y once for the row: the same products, so the same bits.
   const double y = py + 0.5;
   const float fy = float(y), iwy = t.inv_w[2] * fy, y_down = float(fb.height - 1 - py);
+  const FusedRowScalar depth_row(t.z[2], y_down);
 #if FFCOMPAT_X86
-  const __m128 c0 = _mm_loadu_ps(t.c0), cx = _mm_loadu_ps(t.cx), cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
+  const __m128 cy = _mm_mul_ps(_mm_loadu_ps(t.cy), _mm_set1_ps(fy));
 #else
   float cy[4];
   for (int k = 0; k < 4; ++k) cy[k] = t.cy[k] * fy;
@@ -142,19 +213,19 @@ inline uint64_t span_scalar(Framebuffer& fb, const Triangle& t, int py, int lo, 
   uint8_t* o = &fb.color[(size_t(py) * fb.width + lo) * 4];
   uint32_t* zp = &fb.depth[size_t(py) * fb.width + lo];
   for (int px = lo; px <= hi; ++px, o += 4, ++zp) {
-    const double x = px + 0.5;
+    const ColumnTerms here = cols ? cols[px - lo] : column_terms(t, px);
     bool pass = true;
     if constexpr (D != kNoDepth) {
-      const uint32_t zi = depth24(depth_at(t.z, 1, float(px), y_down));
+      const uint32_t zi = depth24(depth_row(here.z));  // depth_at(t.z, 1, X, Y_down)
       if constexpr (D == kLess) pass = zi < *zp;
       else if constexpr (D == kLequal) pass = zi <= *zp;
       else pass = depth_pass(depth_func, zi, *zp);
       if (pass) *zp = zi;
     }
     if (pass) {
-      const float fx = float(x), iw = t.inv_w[0] + t.inv_w[1] * fx + iwy;
+      const float iw = here.iw + iwy;
 #if FFCOMPAT_X86
-      const __m128 col = _mm_add_ps(_mm_add_ps(c0, _mm_mul_ps(cx, _mm_set1_ps(fx))), cy);
+      const __m128 col = _mm_add_ps(_mm_load_ps(here.c), cy);
       // Clamp (a NaN becomes 0), scale, round half to even (the SSE default), pack to bytes.
       __m128 cl = _mm_mul_ps(col, _mm_set1_ps(1.0f / iw));
       nonfinite += _mm_movemask_ps(_mm_cmpunord_ps(_mm_mul_ps(cl, zero), zero)) != 0;  // c * 0: NaN unless finite
@@ -167,7 +238,7 @@ inline uint64_t span_scalar(Framebuffer& fb, const Triangle& t, int py, int lo, 
       const float inv = 1.0f / iw;
       bool finite = true;
       for (int k = 0; k < 4; ++k) {
-        const float c = ((t.c0[k] + t.cx[k] * fx) + cy[k]) * inv;
+        const float c = (here.c[k] + cy[k]) * inv;
         finite &= std::isfinite(c);
         o[k] = unorm8(c);
       }
@@ -195,6 +266,25 @@ inline void for_each_tiny_span(const Triangle& t, const Bands& bands, Draw&& dra
 
 inline bool is_tiny(const Triangle& t, int64_t ext_x, int64_t ext_y) {
   return t.xmax - t.xmin <= 1 && t.ymax - t.ymin <= 1 && ext_x < 4 * 256 && ext_y < 4 * 256;
+}
+
+// rasterize()'s large triangles: each row's span solved for, the column terms made once a column
+// (ColumnCache). Not inlined: the cache lives on this function's stack.
+template <DepthMode D, typename Planes>
+[[gnu::noinline]] uint64_t rasterize_large(Framebuffer& fb, const Triangle& t, GLenum depth_func, const Bands& bands, Planes&& planes) {
+  uint64_t nonfinite = 0;
+  bool ready = false;
+  ColumnTerms store[kCachedColumns];
+  ColumnCache cols(t, store);
+  for_each_row_span(t, bands, [&](int py, int lo, int hi) {
+    if (!ready) {
+      if (!planes()) return false;
+      ready = true;
+    }
+    nonfinite += span_scalar<D>(fb, t, py, lo, hi, depth_func, cols.covers(hi) ? cols.at(lo, hi) : nullptr);
+    return true;
+  });
+  return nonfinite;
 }
 
 // Draws the rows of t (edges set up, box within the framebuffer) that lie in this thread's bands.
@@ -258,8 +348,8 @@ uint64_t rasterize(Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands&
       }
     }
 #endif
-  } else if (!for_each_row_span(t, bands, draw_span)) {  // large (and, without x86 intrinsics, small)
-    return nonfinite;
+  } else {
+    nonfinite += rasterize_large<D>(fb, t, depth_func, bands, planes);  // large (and, without x86 intrinsics, small)
   }
   return nonfinite;
 }

@@ -142,6 +142,26 @@ TEST(BoxKernelBands, TrianglesAcrossBandEdgesDrawEachRowOnce) {
   }
 }
 
+// Triangles wider than the large-triangle paths' column caches (kCachedColumns, 1024 columns): rows
+// that reach past them make their own columns' terms. The scalar loops and every target against
+// the reference rasterizer.
+TEST(LargeTriangles, RowsPastTheColumnCacheDrawWhatTheReferenceDraws) {
+  const int width = 2300, height = 70;
+  const Triangles t = random_triangles(60, 2600, 5, false, width, height);
+  const Drawn reference = draw(t, GL_LESS, 1, false, false, true, false, width, height);
+  const Drawn scalar = draw(t, GL_LESS, 2, false, false, false, false, width, height);
+  EXPECT_EQ(image::compare(reference.picture, scalar.picture).max_diff, 0);
+  EXPECT_TRUE(reference.depth == scalar.depth);
+  for (const std::string& target : vector_targets()) {
+    const OnTarget on(target);
+    for (int threads : {1, 2}) {
+      const Drawn wide = draw(t, GL_LESS, threads, true, false, false, false, width, height);
+      EXPECT_EQ(image::compare(reference.picture, wide.picture).max_diff, 0) << target << ", " << threads;
+      EXPECT_TRUE(reference.depth == wide.depth) << target << ", " << threads;
+    }
+  }
+}
+
 // The depth function is applied, not ignored: each one gives its own picture.
 TEST(BoxKernelDepth, EachFunctionGivesItsOwnPicture) {
   const Triangles t = random_triangles(3000, 6, 7);
@@ -193,14 +213,21 @@ TEST(FusedMulAdd, EveryTargetRoundsOnceAsStdFma) {
   for (size_t i = 0; i < a.size(); ++i) want[i] = std::fma(a[i], b[i], c[i]);
   ASSERT_NE(want[0], float(double(a[0]) * double(b[0]) + double(c[0])))
       << "the first case no longer needs the halfway check: pick another";
+  // The row loop's own (row_loop.h, a and b a row's: in double without an FMA instruction).
+  for (size_t i = 0; i < a.size(); ++i) {
+    const float row = raster::detail::FusedRowScalar(a[i], b[i])(c[i]);
+    ASSERT_EQ(std::memcmp(&want[i], &row, 4), 0) << "row loop: fma(" << a[i] << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << row;
+  }
   std::vector<std::string> targets = vector_targets();
   if (targets.empty()) GTEST_SKIP() << "no vector target: Highway's portable one only";
   for (const std::string& target : targets) {
     const OnTarget on(target);
-    raster::detail::fused_mul_add_wide(a.data(), b.data(), c.data(), got.data(), a.size());
-    for (size_t i = 0; i < a.size(); ++i)
-      ASSERT_EQ(std::memcmp(&want[i], &got[i], 4), 0)
-          << target << ": fma(" << a[i] << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << got[i];
+    for (bool row : {false, true}) {  // the product made with the sum, or first (a row's)
+      raster::detail::fused_mul_add_wide(a.data(), b.data(), c.data(), got.data(), a.size(), row);
+      for (size_t i = 0; i < a.size(); ++i)
+        ASSERT_EQ(std::memcmp(&want[i], &got[i], 4), 0)
+            << target << (row ? " (row)" : "") << ": fma(" << a[i] << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << got[i];
+    }
   }
 }
 

@@ -24,19 +24,19 @@ struct Triangles {
 // n triangles, each within `size` pixels: its corners around a random centre (some beyond the
 // framebuffer's edges), depths and w (perspective: colour / w interpolated) random per corner.
 // across_bands: centres within two rows of a band's edge (rows 64 and 128), where two threads
-// share a triangle's rows.
-inline Triangles random_triangles(int n, float size, unsigned seed, bool across_bands = false) {
+// share a triangle's rows. width, height: the framebuffer's.
+inline Triangles random_triangles(int n, float size, unsigned seed, bool across_bands = false, int width = kWidth, int height = kHeight) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0, 1);
   Triangles t;
   for (int i = 0; i < n; ++i) {
-    const float cx = -8 + u(rng) * (kWidth + 16), z = u(rng) * 1.8f - 0.9f;
-    const float cy = across_bands ? (i % 2 ? 64 : 128) + 4 * (u(rng) - 0.5f) : -8 + u(rng) * (kHeight + 16);
+    const float cx = -8 + u(rng) * float(width + 16), z = u(rng) * 1.8f - 0.9f;
+    const float cy = across_bands ? (i % 2 ? 64 : 128) + 4 * (u(rng) - 0.5f) : -8 + u(rng) * float(height + 16);
     for (int k = 0; k < 3; ++k) {
       const float w = 0.5f + 2 * u(rng);
       const float x = cx + (u(rng) - 0.5f) * size, y = cy + (u(rng) - 0.5f) * size;
       // Window (x, y) from clip coordinates over the whole framebuffer, times w.
-      t.xyzw.insert(t.xyzw.end(), {(2 * x / kWidth - 1) * w, (2 * y / kHeight - 1) * w, (z + 0.1f * (u(rng) - 0.5f)) * w, w});
+      t.xyzw.insert(t.xyzw.end(), {(2 * x / float(width) - 1) * w, (2 * y / float(height) - 1) * w, (z + 0.1f * (u(rng) - 0.5f)) * w, w});
       t.rgba.insert(t.rgba.end(), {u(rng), u(rng), u(rng), u(rng)});
     }
   }
@@ -65,13 +65,14 @@ struct Drawn {
 };
 
 // Drawn with `threads` threads, the wide kernels on or off, triangle lists on or off, the reference
-// rasterizer on or off (it needs lists off: triangle lists have their own setup), flat or smooth.
+// rasterizer on or off (it needs lists off: triangle lists have their own setup), flat or smooth,
+// on a framebuffer of width x height.
 inline Drawn draw(const Triangles& t, GLenum depth_func, int threads, bool wide, bool lists, bool reference = false,
-                  bool flat = false) {
+                  bool flat = false, int width = kWidth, int height = kHeight) {
   raster::detail::set_wide_kernels(wide);
   raster::set_reference_rasterizer(reference);
   auto soft = backends::make("soft");
-  soft->begin(kWidth, kHeight);
+  soft->begin(width, height);
   state::Context::current()->set_threads(threads);
   state::Context::current()->set_triangle_lists(lists);
   glClearColor(0.1f, 0.2f, 0.3f, 1);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include "raster/row_loop.h"
 #include "raster/wide/kernels.h"
@@ -42,11 +43,13 @@ HWY_INLINE V FusedMulAddLanes(DF df, V a, V b, V c) {
   for (size_t k = 0; k < hn::Lanes(df); ++k) x[k] = std::fma(x[k], y[k], z[k]);
   return hn::Load(df, x);
 }
+#undef FFCOMPAT_FMA_IN_DOUBLE
 #if (HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2) || (HWY_ARCH_ARM_A64 && HWY_TARGET != HWY_EMU128 && HWY_TARGET != HWY_SCALAR)
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF, V a, V b, V c) {
   return hn::MulAdd(a, b, c);
 }
+#define FFCOMPAT_FMA_IN_DOUBLE 0
 #elif HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128 && HWY_HAVE_FLOAT64
 // Without a fused instruction (SSE4, SSSE3): in double. a * b is exact there (24 + 24 bits of
 // significand fit in 53), so a * b + c in double is rounded once, and rounding that to float gives
@@ -54,33 +57,70 @@ HWY_INLINE V FusedMulAdd(DF, V a, V b, V c) {
 // rounding may have decided the tie: those vectors, rare, go lane by lane through std::fma), or in
 // float's subnormal range (its halfway points lie elsewhere: the same). A call to fmaf per lane
 // made the cube four times slower than on AVX2.
-template <class DF, class V>
-HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
+#define FFCOMPAT_FMA_IN_DOUBLE 1
+// The float sums of lo and hi (the lower and upper halves' exact products plus c, in double), or
+// `lanes()` where a lane's double is one whose rounding to float could differ from the fused result.
+template <class DF, class VD, class Lanes>
+HWY_INLINE hn::Vec<DF> FusedFromDouble(DF df, VD lo, VD hi, Lanes&& lanes) {
   const hn::Half<DF> dh;
   const hn::Rebind<double, decltype(dh)> dd;
   const hn::RebindToUnsigned<decltype(dd)> du64;
-  // The lanes whose double rounds to float differently from the exact value: halfway (the 29
-  // bits below float's last significand bit are 1000...0), or in float's subnormal range.
-  auto exact = [&](auto x, auto y, auto z) {
-    return hn::Add(hn::Mul(hn::PromoteTo(dd, x), hn::PromoteTo(dd, y)), hn::PromoteTo(dd, z));
-  };
-  auto odd = [&](auto s) {
+  // Halfway (the 29 bits below float's last significand bit are 1000...0), or in float's
+  // subnormal range.
+  auto odd = [&](VD s) {
     const auto tail = hn::And(hn::BitCast(du64, s), hn::Set(du64, (uint64_t(1) << 29) - 1));
     const auto small = hn::And(hn::Lt(hn::Abs(s), hn::Set(dd, 0x1p-125)), hn::Ne(s, hn::Zero(dd)));
     return hn::Or(hn::RebindMask(dd, hn::Eq(tail, hn::Set(du64, uint64_t(1) << 28))), small);
   };
-  const auto lo = exact(hn::LowerHalf(dh, a), hn::LowerHalf(dh, b), hn::LowerHalf(dh, c));
-  const auto hi = exact(hn::UpperHalf(dh, a), hn::UpperHalf(dh, b), hn::UpperHalf(dh, c));
   // One test for both halves: nearly always none is odd.
   if (HWY_LIKELY(hn::AllFalse(dd, hn::Or(odd(lo), odd(hi))))) return hn::Combine(df, hn::DemoteTo(dh, hi), hn::DemoteTo(dh, lo));
-  return FusedMulAddLanes(df, a, b, c);
+  return lanes();
+}
+template <class DF, class V>
+HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
+  const hn::Half<DF> dh;
+  const hn::Rebind<double, decltype(dh)> dd;
+  auto exact = [&](auto x, auto y, auto z) {
+    return hn::Add(hn::Mul(hn::PromoteTo(dd, x), hn::PromoteTo(dd, y)), hn::PromoteTo(dd, z));
+  };
+  return FusedFromDouble(df, exact(hn::LowerHalf(dh, a), hn::LowerHalf(dh, b), hn::LowerHalf(dh, c)),
+                         exact(hn::UpperHalf(dh, a), hn::UpperHalf(dh, b), hn::UpperHalf(dh, c)),
+                         [&] { return FusedMulAddLanes(df, a, b, c); });
 }
 #else
+#define FFCOMPAT_FMA_IN_DOUBLE 0
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
   return FusedMulAddLanes(df, a, b, c);
 }
 #endif
+
+// FusedMulAdd(a, b, c) for a and b fixed while c varies (depth's second step, z2 Y_down + (...),
+// along a row): where the fused step is done in double, a * b is made once, exactly.
+template <class DF>
+struct FusedRow {
+  using V = hn::Vec<DF>;
+  V a, b;
+#if FFCOMPAT_FMA_IN_DOUBLE
+  using DD = hn::Rebind<double, hn::Half<DF>>;
+  hn::Vec<DD> ab_lo, ab_hi;
+  HWY_INLINE FusedRow(DF, V a_, V b_) : a(a_), b(b_) {
+    const hn::Half<DF> dh;
+    const DD dd;
+    ab_lo = hn::Mul(hn::PromoteTo(dd, hn::LowerHalf(dh, a)), hn::PromoteTo(dd, hn::LowerHalf(dh, b)));
+    ab_hi = hn::Mul(hn::PromoteTo(dd, hn::UpperHalf(dh, a)), hn::PromoteTo(dd, hn::UpperHalf(dh, b)));
+  }
+  HWY_INLINE V operator()(DF df, V c) const {
+    const hn::Half<DF> dh;
+    const DD dd;
+    return FusedFromDouble(df, hn::Add(ab_lo, hn::PromoteTo(dd, hn::LowerHalf(dh, c))), hn::Add(ab_hi, hn::PromoteTo(dd, hn::UpperHalf(dh, c))),
+                           [&] { return FusedMulAddLanes(df, a, b, c); });
+  }
+#else
+  HWY_INLINE FusedRow(DF, V a_, V b_) : a(a_), b(b_) {}
+  HWY_INLINE V operator()(DF df, V c) const { return FusedMulAdd(df, a, b, c); }
+#endif
+};
 
 #undef FFCOMPAT_X86_VECTORS
 #if HWY_ARCH_X86 && HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128
@@ -174,6 +214,49 @@ struct AtColumns {
     z = FusedMulAdd(df, p.z1, col, p.z0), iw = hn::Add(p.iw0, hn::Mul(p.iw1, fx));
     for (int k = 0; k < 4; ++k) c[k] = hn::Add(p.c0[k], hn::Mul(p.cx[k], fx));
   }
+  // Read back from a ColumnCache's six arrays (pitch floats apart) at `at`.
+  HWY_INLINE AtColumns(DF df, const Planes<DF>& planes, const float* at, size_t pitch) : p(planes) {
+    z = hn::LoadU(df, at), iw = hn::LoadU(df, at + pitch);
+    for (int k = 0; k < 4; ++k) c[k] = hn::LoadU(df, at + (2 + k) * pitch);
+  }
+};
+
+// A large triangle's AtColumns for the columns this thread has drawn so far, each column's made
+// once rather than once per row: the same values (they depend on the column alone), so the same
+// bits. Six arrays of kCachedColumns (+ padding) floats on the caller's stack (a heap buffer
+// would be allocated during some frame), for the triangle's columns xmin... up to kCachedColumns
+// of them (row_loop.h); a span reaching further makes its own (Covers).
+template <class DF>
+struct ColumnCache {
+  // Two vectors' padding: the last vector of a row reads up to a vector past its span, and the
+  // last vector made for it writes up to a vector past that.
+  static constexpr size_t kPitch = kCachedColumns + 2 * kMaxLanes32;
+  float* store;  // 6 * kPitch floats
+  int xmin, lo = 0, hi = -1;  // columns lo..hi are made
+  HWY_INLINE ColumnCache(float* storage, int xmin_) : store(storage), xmin(xmin_) {}
+  HWY_INLINE bool Covers(int to) const { return to - xmin < kCachedColumns; }
+  // Makes the columns from..to (within the triangle's, Covers(to)) that are not made yet, a vector
+  // at a time; returns where column `from`'s values lie.
+  HWY_INLINE const float* At(DF df, const Planes<DF>& p, int from, int to) {
+    if (lo > hi) {
+      Make(df, p, from, to);
+      lo = from, hi = to;
+    } else {
+      if (from < lo) Make(df, p, from, lo - 1), lo = from;
+      if (to > hi) Make(df, p, hi + 1, to), hi = to;
+    }
+    return store + (from - xmin);
+  }
+  HWY_INLINE void Make(DF df, const Planes<DF>& p, int from, int to) {
+    const hn::RebindToSigned<DF> di;
+    const int n = int(hn::Lanes(df));
+    for (int x = from; x <= to; x += n) {
+      const AtColumns<DF> a(df, p, hn::ConvertTo(df, LanesFrom(di, x)));
+      float* at = store + (x - xmin);
+      hn::StoreU(a.z, df, at), hn::StoreU(a.iw, df, at + kPitch);
+      for (int k = 0; k < 4; ++k) hn::StoreU(a.c[k], df, at + (2 + k) * kPitch);
+    }
+  }
 };
 
 // The pixels x + k of a row: read whole where the vector lies within the row (the row is this
@@ -195,19 +278,32 @@ HWY_INLINE void StorePixels(DU du, hn::Vec<DU> v, uint32_t* at, bool whole, size
   std::memcpy(at, buf, lanes_in_row * 4);
 }
 
-// Depth test and colour for the lanes of `lanes` at pixel columns col, rows y (as floats: their
-// centres fy = y + 0.5, for depth y_down = height - 1 - y), the row loop's span_scalar lane by
-// lane; the stored depth and colour read by load(buffer) and written by store(buffer, v)
-// (buffer 0: depth, 1: colour). Returns the drawn pixels whose colour was not finite.
-template <DepthMode Mode, class DF, class V, class Load, class Store>
-HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, V fy, V y_down, hn::Mask<DF> lanes_f, GLenum func, Load&& load,
+// A triangle's planes at rows y, the terms that depend on Y only: py Y of 1/w and of each
+// colour / w (Y = fy, the centre y + 0.5), and depth's second fused step, z2 Y_down + (...) with
+// Y_down = height - 1 - y. Made once a row where lanes share their row.
+template <class DF>
+struct AtRows {
+  using V = hn::Vec<DF>;
+  V iw, c[4];
+  FusedRow<DF> z;
+  HWY_INLINE AtRows(DF df, const Planes<DF>& p, V fy, V y_down) : z(df, p.z2, y_down) {
+    iw = hn::Mul(p.iw2, fy);
+    for (int k = 0; k < 4; ++k) c[k] = hn::Mul(p.cy[k], fy);
+  }
+};
+
+// Depth test and colour for the lanes of `lanes` at pixel columns col (a) and rows y (r), the row
+// loop's span_scalar lane by lane; the stored depth and colour read by load(buffer) and written
+// by store(buffer, v) (buffer 0: depth, 1: colour). Returns the drawn pixels whose colour was not
+// finite.
+template <DepthMode Mode, class DF, class Load, class Store>
+HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, const AtRows<DF>& r, hn::Mask<DF> lanes_f, GLenum func, Load&& load,
                                Store&& store) {
-  const Planes<DF>& p = a.p;
   const hn::RebindToSigned<DF> di;
   const hn::RebindToUnsigned<DF> du;
   auto pass = hn::RebindMask(di, lanes_f);
   if constexpr (Mode != kNoDepth) {
-    const auto z = Depth24(df, FusedMulAdd(df, p.z2, y_down, a.z));
+    const auto z = Depth24(df, r.z(df, a.z));  // FusedMulAdd(z2, Y_down, a.z)
     const auto old_z = load(0);
     pass = DepthTest<Mode>(di, pass, z, hn::BitCast(di, old_z), func);
     if (hn::AllFalse(di, pass)) return 0;
@@ -215,12 +311,12 @@ HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, V fy, V y_down, hn
   }
   // Colour: ((c0 + cx X) + cy Y) * (1 / ((iw0 + iw1 X) + iw2 Y)), clamped, times 255, rounded
   // half to even, a byte a channel (pixel_rules.h unorm8).
-  const auto inv = hn::Div(hn::Set(df, 1.0f), hn::Add(a.iw, hn::Mul(p.iw2, fy)));
+  const auto inv = hn::Div(hn::Set(df, 1.0f), hn::Add(a.iw, r.iw));
   auto rgba = hn::Zero(du);
   auto finite = hn::RebindMask(df, pass);
 #pragma GCC unroll 4
   for (int k = 0; k < 4; ++k) {
-    const auto v = hn::Mul(hn::Add(a.c[k], hn::Mul(p.cy[k], fy)), inv);
+    const auto v = hn::Mul(hn::Add(a.c[k], r.c[k]), inv);
     finite = hn::And(finite, hn::IsFinite(v));
     const auto q = hn::BitCast(du, RoundInRange(df, hn::Mul(Clamp01(df, v), hn::Set(df, 255.0f))));
     rgba = hn::Or(rgba, hn::ShiftLeftSame(q, 8 * k));
@@ -232,19 +328,31 @@ HWY_INLINE uint64_t ShadeLanes(DF df, const AtColumns<DF>& a, V fy, V y_down, hn
   return hn::AllFalse(di, nonfinite) ? 0 : hn::CountTrue(di, nonfinite);
 }
 
-// Pixels x + k of row y for the lanes k set in `lanes` (all within the framebuffer).
+// The row terms of row y.
+template <class DF>
+HWY_INLINE AtRows<DF> RowOf(DF df, const Planes<DF>& p, const Framebuffer& fb, int y) {
+  return AtRows<DF>(df, p, hn::Set(df, float(double(y) + 0.5)), hn::Set(df, float(fb.height - 1 - y)));
+}
+
+// Pixels x + k of row y (its terms r) for the lanes k set in `lanes` (all within the
+// framebuffer), at columns a.
 template <DepthMode Mode, class DF>
-HWY_INLINE uint64_t Segment(DF df, const Planes<DF>& p, Framebuffer& fb, int y, int x, hn::Mask<DF> lanes, GLenum func) {
-  const hn::RebindToSigned<DF> di;
+HWY_INLINE uint64_t Segment(DF df, const AtColumns<DF>& a, const AtRows<DF>& r, Framebuffer& fb, int y, int x, hn::Mask<DF> lanes,
+                            GLenum func) {
   const hn::RebindToUnsigned<DF> du;
   const size_t n = hn::Lanes(df), in_row = std::min(n, size_t(fb.width - x));
   const bool whole = in_row == n;
   uint32_t* const at[2] = {fb.depth.data() + size_t(y) * size_t(fb.width) + size_t(x),
                            reinterpret_cast<uint32_t*>(fb.color.data()) + size_t(y) * size_t(fb.width) + size_t(x)};
-  return ShadeLanes<Mode>(df, AtColumns<DF>(df, p, hn::ConvertTo(df, LanesFrom(di, x))), hn::Set(df, float(double(y) + 0.5)),
-                          hn::Set(df, float(fb.height - 1 - y)), lanes, func,
-                          [&](int b) { return LoadPixels(du, at[b], whole, in_row); },
+  return ShadeLanes<Mode>(df, a, r, lanes, func, [&](int b) { return LoadPixels(du, at[b], whole, in_row); },
                           [&](int b, hn::Vec<decltype(du)> v) { StorePixels(du, v, at[b], whole, in_row); });
+}
+// The same with the columns' terms made here.
+template <DepthMode Mode, class DF>
+HWY_INLINE uint64_t Segment(DF df, const Planes<DF>& p, const AtRows<DF>& r, Framebuffer& fb, int y, int x, hn::Mask<DF> lanes,
+                            GLenum func) {
+  const hn::RebindToSigned<DF> di;
+  return Segment<Mode>(df, AtColumns<DF>(df, p, hn::ConvertTo(df, LanesFrom(di, x))), r, fb, y, x, lanes, func);
 }
 
 #if HWY_TARGET != HWY_SCALAR  // one lane: no halves to combine
@@ -338,10 +446,11 @@ HWY_INLINE uint64_t BoxShade(Framebuffer& fb, const KernelPlanes& kp, int xmin, 
   for (; cover; cover &= ~(uint64_t(0xFF) << (__builtin_ctzll(cover) & ~7))) {
     const int r = __builtin_ctzll(cover) >> 3;
     const unsigned row_bits = unsigned(cover >> (8 * r)) & 0xFF;
+    const AtRows<DF> row = RowOf(df, p, fb, ymin + r);
     for (int c = 0; c < 8; c += n) {
       const uint8_t bits = uint8_t(row_bits >> c);
       if (!bits) continue;
-      nonfinite += Segment<Mode>(df, p, fb, ymin + r, xmin + c, hn::LoadMaskBits(df, &bits), func);
+      nonfinite += Segment<Mode>(df, p, row, fb, ymin + r, xmin + c, hn::LoadMaskBits(df, &bits), func);
     }
   }
   return nonfinite;
@@ -358,8 +467,8 @@ HWY_INLINE uint64_t ShadeBlock(DF df, const AtColumns<DF>& at_col, Framebuffer& 
   const size_t pitch = size_t(fb.width), off = size_t(y0) * pitch + size_t(xmin);
   uint32_t* const at[2] = {fb.depth.data() + off, reinterpret_cast<uint32_t*>(fb.color.data()) + off};
   const auto y = hn::Add(hn::Set(di, y0), dy);
-  return ShadeLanes<Mode, DF>(df, at_col, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)), hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)),
-                              lanes, func, [&](int b) { return LoadRows<W>(du, at[b], pitch, live); },
+  const AtRows<DF> rows(df, at_col.p, hn::Add(hn::ConvertTo(df, y), hn::Set(df, 0.5f)), hn::ConvertTo(df, hn::Sub(hn::Set(di, fb.height - 1), y)));
+  return ShadeLanes<Mode, DF>(df, at_col, rows, lanes, func, [&](int b) { return LoadRows<W>(du, at[b], pitch, live); },
                               [&](int b, hn::Vec<decltype(du)> v) { StoreRows<W>(du, v, at[b], pitch, live); });
 }
 #endif
@@ -504,13 +613,23 @@ HWY_INLINE uint64_t BoxDraw(Framebuffer& fb, const KernelEdges& e, const KernelP
   return cover ? BoxShadeAny<Mode>(fb, kp, xmin, e(kYmin), w, cover, func) : 0;
 }
 
-// Pixels lo..hi of row y, a vector at a time.
+// Pixels lo..hi of row y, a vector at a time, the columns' terms from the cache.
 template <DepthMode Mode>
-HWY_INLINE uint64_t SpanShade(Framebuffer& fb, const Planes<hn::ScalableTag<float>>& p, int y, int lo, int hi, GLenum func) {
-  const hn::ScalableTag<float> df;
+HWY_INLINE uint64_t SpanShade(Framebuffer& fb, const Planes<hn::ScalableTag<float>>& p, ColumnCache<hn::ScalableTag<float>>& cols, int y,
+                              int lo, int hi, GLenum func) {
+  using DF = hn::ScalableTag<float>;
+  const DF df;
   const int n = int(hn::Lanes(df));
+  const AtRows<DF> row = RowOf(df, p, fb, y);
+  const int to = lo + (hi - lo) / n * n + n - 1;  // the last vector's last column
   uint64_t nonfinite = 0;
-  for (int x = lo; x <= hi; x += n) nonfinite += Segment<Mode>(df, p, fb, y, x, hn::FirstN(df, size_t(hi - x + 1)), func);
+  if (!cols.Covers(to)) {
+    for (int x = lo; x <= hi; x += n) nonfinite += Segment<Mode>(df, p, row, fb, y, x, hn::FirstN(df, size_t(hi - x + 1)), func);
+    return nonfinite;
+  }
+  const float* at = cols.At(df, p, lo, to);
+  for (int x = lo; x <= hi; x += n, at += n)
+    nonfinite += Segment<Mode>(df, AtColumns<DF>(df, p, at, cols.kPitch), row, fb, y, x, hn::FirstN(df, size_t(hi - x + 1)), func);
   return nonfinite;
 }
 
@@ -526,13 +645,43 @@ HWY_INLINE uint64_t RowsShade(Framebuffer& fb, const KernelEdges& e, const Kerne
   for (int by = bands.next[size_t(ymin / kBandRows)]; by * kBandRows <= ymax; by += bands.count) {
     const int row_end = std::min(by * kBandRows + kBandRows - 1, ymax);
     for (int y = std::max(by * kBandRows, ymin); y <= row_end; ++y) {
+      const AtRows<hn::ScalableTag<float>> row = RowOf(df, p, fb, y);
       for (int x = xmin; x <= xmax; x += n) {
         const auto in = hn::And(Covered(di, e, x - xmin, y - ymin), hn::FirstN(di, size_t(xmax - x + 1)));
         if (hn::AllFalse(di, in)) continue;
-        nonfinite += Segment<Mode>(df, p, fb, y, x, hn::RebindMask(df, in), func);
+        nonfinite += Segment<Mode>(df, p, row, fb, y, x, hn::RebindMask(df, in), func);
       }
     }
   }
+  return nonfinite;
+}
+
+// A triangle too large for 32-bit edge functions: each row's span solved for (row_loop.h), spans
+// of a vector or more a vector at a time with the columns' terms from a ColumnCache, shorter ones
+// by the scalar span. Not inlined: the cache lives on this function's stack.
+template <DepthMode Mode, typename PlanesFn>
+HWY_NOINLINE uint64_t RasterizeLarge(Framebuffer& fb, Triangle& t, GLenum func, const Bands& bands, PlanesFn&& planes) {
+  using DF = hn::ScalableTag<float>;
+  const DF df;
+  const int n = int(hn::Lanes(df));
+  uint64_t nonfinite = 0;
+  bool ready = false;
+  // Broadcast at the first span a vector long (placement new: std::optional's construction is
+  // not compiled for the target, and Planes's constructor must inline into code that is).
+  alignas(Planes<DF>) unsigned char planes_room[sizeof(Planes<DF>)];
+  const Planes<DF>* p = nullptr;
+  alignas(64) float column_store[6 * ColumnCache<DF>::kPitch];
+  ColumnCache<DF> cols(column_store, t.xmin);
+  for_each_row_span(t, bands, [&](int py, int lo, int hi) {
+    if (!ready && !(ready = planes())) return false;
+    if (hi - lo + 1 < n) {
+      nonfinite += span_scalar<Mode>(fb, t, py, lo, hi, func);
+      return true;
+    }
+    if (!p) p = new (planes_room) Planes<DF>(df, KernelPlanes{t.z, t.inv_w, 1});
+    nonfinite += SpanShade<Mode>(fb, *p, cols, py, lo, hi, func);
+    return true;
+  });
   return nonfinite;
 }
 
@@ -562,15 +711,7 @@ HWY_INLINE uint64_t Rasterize(Framebuffer& fb, Triangle& t, GLenum func, const B
       nonfinite = RowsShade<Mode>(fb, {edges, 1}, kp, bands, func);
     }
   } else {
-    const hn::ScalableTag<float> df;
-    const int n = int(hn::Lanes(df));
-    bool ready = false;
-    for_each_row_span(t, bands, [&](int py, int lo, int hi) {
-      if (!ready && !(ready = planes())) return false;
-      if (hi - lo + 1 >= n) nonfinite += SpanShade<Mode>(fb, Planes<hn::ScalableTag<float>>(df, {t.z, t.inv_w, 1}), py, lo, hi, func);
-      else nonfinite += span_scalar<Mode>(fb, t, py, lo, hi, func);
-      return true;
-    });
+    nonfinite = RasterizeLarge<Mode>(fb, t, func, bands, planes);
   }
   return nonfinite;
 }

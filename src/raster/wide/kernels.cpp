@@ -24,15 +24,17 @@ uint64_t RasterizeWide(DepthMode mode, Framebuffer& fb, Triangle& t, GLenum func
   return 0;
 }
 
-// Depth's fused multiply-add on this target, a vector at a time (its own test: kernels_test).
-void FusedMulAddArrays(const float* a, const float* b, const float* c, float* out, size_t n) {
+// Depth's fused multiply-add on this target, a vector at a time, as FusedMulAdd or (row) as
+// FusedRow, whose product is made first (its own test: kernels_test).
+void FusedMulAddArrays(const float* a, const float* b, const float* c, float* out, size_t n, bool row) {
   const hn::ScalableTag<float> df;
   const size_t lanes = hn::Lanes(df);
   alignas(64) float x[kMaxLanes32], y[kMaxLanes32], z[kMaxLanes32];
   for (size_t i = 0; i < n; i += lanes) {
     const size_t m = std::min(lanes, n - i);
     for (size_t k = 0; k < lanes; ++k) x[k] = k < m ? a[i + k] : 0, y[k] = k < m ? b[i + k] : 0, z[k] = k < m ? c[i + k] : 0;
-    hn::Store(FusedMulAdd(df, hn::Load(df, x), hn::Load(df, y), hn::Load(df, z)), df, x);
+    const auto va = hn::Load(df, x), vb = hn::Load(df, y), vc = hn::Load(df, z);
+    hn::Store(row ? FusedRow<hn::ScalableTag<float>>(df, va, vb)(df, vc) : FusedMulAdd(df, va, vb, vc), df, x);
     for (size_t k = 0; k < m; ++k) out[i + k] = x[k];
   }
 }
@@ -46,8 +48,8 @@ namespace ffc::raster::detail {
 HWY_EXPORT(RasterizeWide);
 HWY_EXPORT(FusedMulAddArrays);
 
-void fused_mul_add_wide(const float* a, const float* b, const float* c, float* out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(FusedMulAddArrays)(a, b, c, out, n);
+void fused_mul_add_wide(const float* a, const float* b, const float* c, float* out, size_t n, bool row) {
+  HWY_DYNAMIC_DISPATCH(FusedMulAddArrays)(a, b, c, out, n, row);
 }
 
 bool g_kernels_allowed = true;

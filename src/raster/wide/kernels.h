@@ -70,7 +70,8 @@ struct PlanesRef {
 uint64_t rasterize_wide(DepthMode mode, Framebuffer& fb, Triangle& t, GLenum depth_func, const Bands& bands, PlanesRef planes);
 
 // out[i] = a[i] * b[i] + c[i] rounded once, by the dispatched target's vector code for depth (one
-// instruction, or in double with a check for halfway cases): for tests against std::fma.
-void fused_mul_add_wide(const float* a, const float* b, const float* c, float* out, size_t n);
+// instruction, or in double with a check for halfway cases; with `row`, the code that makes the
+// product once for a row's pixels): for tests against std::fma.
+void fused_mul_add_wide(const float* a, const float* b, const float* c, float* out, size_t n, bool row);
 
 }  // namespace ffc::raster::detail
