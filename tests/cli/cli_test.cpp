@@ -311,6 +311,29 @@ TEST(Cli, BenchMesaIsaSameRestrictsLlvmpipeToSoftsTarget) {
   EXPECT_NE(ffcompat("bench --scene cube --frames 1 --mesa-isa sse9").status, 0);
 }
 
+// Deviation 73 (docs/deviations.md): llvmpipe without FMA (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1) rounds
+// its depth twice, and a tie on the seed cube's silhouette from this camera goes the other way:
+// the pixel check fails and names the cause. With FMA (native here) the same camera agrees.
+TEST(Cli, PixelCheckNamesLlvmpipeWithoutFma) {
+#if defined(__x86_64__)
+  if (!__builtin_cpu_supports("fma")) GTEST_SKIP() << "llvmpipe has no FMA here: the native run is the other side";
+  const std::string args = "check --level pixel --scene cube --shade flat --normals face --cam-angle 279 --cam-height -0.5 --json --out " +
+                           tmp("no_fma").string();
+  const Result without = ffcompat(args, "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1");
+  EXPECT_EQ(without.status, 2);
+  const auto j = nlohmann::json::parse(without.out);
+  EXPECT_GT(j["max_diff"].get<int>(), 1);
+  EXPECT_EQ(j["known_mesa_deviations"], nlohmann::json::array({"llvmpipe-without-fma"}));
+  const Result with = ffcompat(args);
+  EXPECT_EQ(with.status, 0);
+  const auto k = nlohmann::json::parse(with.out);
+  EXPECT_EQ(k["max_diff"], 0);
+  EXPECT_EQ(k["known_mesa_deviations"], nlohmann::json::array());
+#else
+  GTEST_SKIP() << "GALLIUM_OVERRIDE_CPU_CAPS is x86's";
+#endif
+}
+
 #ifdef FFCOMPAT_WITH_GLSL
 // The GLSL backend keeps its buffers, lists and uniform values: after the warm-up frame (programs
 // compiled, states seen) a frame allocates nothing, on each draw path, with two programs a frame

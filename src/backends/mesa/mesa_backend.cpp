@@ -1,5 +1,7 @@
 #include "backends/mesa/mesa_backend.h"
 
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "backends/mesa/mesa_platform.h"
@@ -56,6 +58,17 @@ std::string mesa_platform() { return platform::mesa_platform_from_environment(kO
 void* mesa_proc_address(const std::string& platform, const char* name) {
   const mesa::Loader load = loader_of(platform);
   return load ? load(name) : nullptr;
+}
+
+bool llvmpipe_fuses() {
+#if defined(__x86_64__) || defined(__i386__)
+  if (const char* caps = std::getenv("GALLIUM_OVERRIDE_CPU_CAPS"))
+    for (const char* without : {"nosse", "sse", "sse2", "sse3", "ssse3", "sse4.1"})
+      if (std::strcmp(caps, without) == 0) return false;
+  return __builtin_cpu_supports("avx") && __builtin_cpu_supports("fma");
+#else
+  return true;
+#endif
 }
 
 MesaBackend::MesaBackend(std::string platform) : platform_(std::move(platform)) {
