@@ -74,10 +74,10 @@ inline uint8_t unorm8(float c) {
   return uint8_t(std::nearbyint(clamped * 255.0f));
 }
 
-// The fragment's depth at pixel column X, row Y counted from the top: two fused multiply-adds, as
-// lp_bld_interp.c's interp_attrib_linear (llvm.fmuladd, fused on a CPU with FMA).
+// The fragment's depth at pixel column X, row Y counted from the top: two multiply-adds, as
+// lp_bld_interp.c's interp_attrib_linear (llvm.fmuladd: fused on a CPU with FMA, llvmpipe_fma()).
 inline float depth_at(const float* z, int stride, float x, float y_down) {
-  return std::fma(z[2 * stride], y_down, std::fma(z[stride], x, z[0]));
+  return llvmpipe_mul_add(z[2 * stride], y_down, llvmpipe_mul_add(z[stride], x, z[0]));
 }
 
 }  // namespace ffc::raster::detail

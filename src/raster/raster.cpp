@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "raster/isa.h"
 #if FFCOMPAT_X86
@@ -15,6 +18,23 @@
 #endif
 
 namespace ffc::raster {
+
+namespace detail {
+bool g_llvmpipe_fma = true;
+}
+
+bool configure_llvmpipe_fma_from_environment() {
+  // Read once: a process's llvmpipe does not change its mind.
+  static const bool set = [] {
+    const char* e = std::getenv("FFCOMPAT_LLVMPIPE_FMA");
+    if (!e || !*e) return false;
+    if (std::strcmp(e, "0") != 0 && std::strcmp(e, "1") != 0)
+      throw std::invalid_argument(std::string("FFCOMPAT_LLVMPIPE_FMA=") + e + ": 1 (llvmpipe's multiply-adds fused, the default) or 0");
+    set_llvmpipe_fma(*e == '1');
+    return true;
+  }();
+  return set;
+}
 
 uint8_t to_unorm8(double c) {
   if (!(c > 0)) return 0;  // also NaN
@@ -158,6 +178,7 @@ int64_t round_even(float v) {
 }
 }  // namespace
 
+// The multiply-adds of llvmpipe's viewport transform (draw_llvm.c, llvm.fmuladd: llvmpipe_fma()).
 // On x86 built twice, with and without FMA instructions (chosen at load time): std::fma is one
 // instruction where the CPU has it, a library call otherwise; the same bits either way. (AArch64
 // always has it.) Not under ThreadSanitizer: the chooser runs as the program loads, before the
@@ -170,11 +191,11 @@ FloatWindow map_float(const glm::vec4& clip, const State& s) {
   const float fiw = 1.0f / clip.w;
   const float nx = clip.x * fiw, ny = clip.y * fiw, nz = clip.z * fiw;
   const float hw = float(vp[2]) * 0.5f, hh = float(vp[3]) * 0.5f;
-  const float x = std::fma(nx, hw, float(vp[0]) + hw);
-  const float y_down = std::fma(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
+  const float x = llvmpipe_mul_add(nx, hw, float(vp[0]) + hw);
+  const float y_down = llvmpipe_mul_add(ny, -hh, float(s.fb_height) - (float(vp[1]) + hh));
   const float dn = float(s.depth_range.x), df = float(s.depth_range.y);
   FloatWindow w;
-  w.x = x, w.y = float(s.fb_height) - y_down, w.y_down = y_down, w.z = std::fma(nz, (df - dn) * 0.5f, (df + dn) * 0.5f);
+  w.x = x, w.y = float(s.fb_height) - y_down, w.y_down = y_down, w.z = llvmpipe_mul_add(nz, (df - dn) * 0.5f, (df + dn) * 0.5f);
   // Snapped where llvmpipe snaps: (v - 0.5) in 1/256 pixel, half to even, rows counted down.
   w.sx = round_even((x - 0.5f) * 256.0f) + 128;
   w.sy = int64_t(s.fb_height - 1) * 256 - round_even((y_down - 0.5f) * 256.0f) + 128;

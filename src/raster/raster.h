@@ -144,6 +144,23 @@ struct WindowVertex {
   double fog = 0;  // the fog coordinate
 };
 
+// How llvmpipe's multiply-adds round where soft copies them (the window mapping, a fragment's
+// depth): its shaders use llvm.fmuladd, which LLVM fuses (one rounding) only on a CPU with FMA;
+// on an x86 CPU without (or under GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 and below) they are a product
+// and a sum, and ties between triangles land elsewhere (docs/deviations.md row 73). Fused by
+// default; FFCOMPAT_LLVMPIPE_FMA=0 (read at the first context) or set_llvmpipe_fma(false) for the
+// other. Process-wide, as Mesa's choice is; the lab sets it to the Mesa it runs beside.
+namespace detail {
+extern bool g_llvmpipe_fma;
+}
+inline bool llvmpipe_fma() { return detail::g_llvmpipe_fma; }
+inline void set_llvmpipe_fma(bool fused) { detail::g_llvmpipe_fma = fused; }
+// Applies FFCOMPAT_LLVMPIPE_FMA (0 or 1) once per process; throws std::invalid_argument for
+// another value. Whether the variable was set.
+bool configure_llvmpipe_fma_from_environment();
+// a * b + c as llvmpipe rounds it (above): std::fma, or a product and a sum.
+inline float llvmpipe_mul_add(float a, float b, float c) { return llvmpipe_fma() ? std::fma(a, b, c) : a * b + c; }
+
 // The float path of map_to_window: window x, y (GL rows, up), z, and the snapped position.
 struct FloatWindow {
   float x, y, z;

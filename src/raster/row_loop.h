@@ -120,19 +120,23 @@ inline unsigned cover_2x2(const Triangle& t) {
 #endif
 }
 
-// a * b + c rounded once, as std::fma, for a and b fixed along a row (depth's second step,
-// z2 Y_down + (...)). Without a fused instruction (x86 before FMA3: std::fma is a library call
-// there) in double, the product made once: it is exact (24 + 24 significand bits fit in 53), the
-// sum is rounded once, and rounding that to float gives the fused result unless the double lies
-// exactly halfway between two floats or in float's subnormal range (then std::fma decides), as
-// wide/kernels-inl.h FusedMulAdd does a vector at a time.
+// llvmpipe_mul_add(a, b, c) for a and b fixed along a row (depth's second step,
+// z2 Y_down + (...)). Fused without an FMA instruction (x86 before FMA3: std::fma is a library
+// call there): in double, the product made once. It is exact (24 + 24 significand bits fit in
+// 53), the sum is rounded once, and rounding that to float gives the fused result unless the
+// double lies exactly halfway between two floats or in float's subnormal range (then std::fma
+// decides), as wide/kernels-inl.h FusedMulAdd does a vector at a time. Unfused: the product
+// rounded to float once, then the sum.
 struct FusedRowScalar {
-  float a, b;
+  float a, b, ab;  // ab: the unfused product
+  bool fused;
 #if FFCOMPAT_X86 && !defined(__FMA__)
-  double ab;
-  FusedRowScalar(float a_, float b_) : a(a_), b(b_), ab(double(a_) * double(b_)) {}
+  double ab_exact;
+  FusedRowScalar(float a_, float b_)
+      : a(a_), b(b_), ab(a_ * b_), fused(llvmpipe_fma()), ab_exact(double(a_) * double(b_)) {}
   float operator()(float c) const {
-    const double s = ab + double(c);
+    if (!fused) return ab + c;
+    const double s = ab_exact + double(c);
     uint64_t bits;
     std::memcpy(&bits, &s, 8);
     const bool halfway = (bits & ((uint64_t(1) << 29) - 1)) == uint64_t(1) << 28;
@@ -140,12 +144,12 @@ struct FusedRowScalar {
     return float(s);
   }
 #else
-  FusedRowScalar(float a_, float b_) : a(a_), b(b_) {}
-  float operator()(float c) const { return std::fma(a, b, c); }
+  FusedRowScalar(float a_, float b_) : a(a_), b(b_), ab(a_ * b_), fused(llvmpipe_fma()) {}
+  float operator()(float c) const { return fused ? std::fma(a, b, c) : ab + c; }
 #endif
 };
 
-// The plane terms of a column that depend on X alone: depth's first fused step fma(z1, X, z0),
+// The plane terms of a column that depend on X alone: depth's first step z1 X + z0,
 // (iw0 + iw1 X) and each colour's (c0 + cx X) (X = px + 0.5; depth at the column px).
 struct ColumnTerms {
   alignas(32) float z, iw, pad[2], c[4];
@@ -153,7 +157,7 @@ struct ColumnTerms {
 inline ColumnTerms column_terms(const Triangle& t, int px) {
   ColumnTerms k{};
   const float fx = float(px + 0.5);
-  k.z = std::fma(t.z[1], float(px), t.z[0]);
+  k.z = llvmpipe_mul_add(t.z[1], float(px), t.z[0]);
   k.iw = t.inv_w[0] + t.inv_w[1] * fx;
   for (int i = 0; i < 4; ++i) k.c[i] = t.c0[i] + t.cx[i] * fx;
   return k;

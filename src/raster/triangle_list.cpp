@@ -39,6 +39,10 @@ using detail::map_one;
 struct FmaInstruction {
   __attribute__((target("fma"))) static __m128 fma(__m128 a, __m128 b, __m128 c) { return _mm_fmadd_ps(a, b, c); }
 };
+// llvmpipe without FMA (llvmpipe_fma() false): a product, then a sum.
+struct MulThenAdd {
+  static __m128 fma(__m128 a, __m128 b, __m128 c) { return _mm_add_ps(_mm_mul_ps(a, b), c); }
+};
 struct FmaCall {
   static __m128 fma(__m128 a, __m128 b, __m128 c) {
     alignas(16) float x[4], y[4], z[4];
@@ -108,7 +112,7 @@ void map_list_vertices(ListVertices& vs, size_t first, size_t count, const State
 #if FFCOMPAT_X86
   static const bool fma = __builtin_cpu_supports("fma");
   for (; i + 4 <= first + count; i += 4)
-    if (!(fma ? map_four<FmaInstruction>(vs, i, s) : map_four<FmaCall>(vs, i, s)))
+    if (!(!llvmpipe_fma() ? map_four<MulThenAdd>(vs, i, s) : fma ? map_four<FmaInstruction>(vs, i, s) : map_four<FmaCall>(vs, i, s)))
       for (size_t k = i; k < i + 4; ++k) map_one(vs, k, s);
 #endif
   for (; i < first + count; ++i) map_one(vs, i, s);

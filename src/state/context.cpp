@@ -18,6 +18,7 @@ Context::Context(int width, int height, Precision precision)
     : fb_(width, height), precision_(precision), viewport_(0, 0, width, height) {
   lights_[0].diffuse = lights_[0].specular = glm::dvec4(1);
   simd::configure_from_environment();  // FFCOMPAT_SIMD / FFCOMPAT_SCALAR, before the first kernel
+  raster::configure_llvmpipe_fma_from_environment();  // FFCOMPAT_LLVMPIPE_FMA
   if (const char* e = std::getenv("FFCOMPAT_EARLY_CORNERS"); e && *e) early_corners_ = std::strtoull(e, nullptr, 10);
 }
 

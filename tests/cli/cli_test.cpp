@@ -312,23 +312,29 @@ TEST(Cli, BenchMesaIsaSameRestrictsLlvmpipeToSoftsTarget) {
 }
 
 // Deviation 73 (docs/deviations.md): llvmpipe without FMA (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1) rounds
-// its depth twice, and a tie on the seed cube's silhouette from this camera goes the other way:
-// the pixel check fails and names the cause. With FMA (native here) the same camera agrees.
-TEST(Cli, PixelCheckNamesLlvmpipeWithoutFma) {
+// its multiply-adds twice, and a depth tie on the seed cube's silhouette from this camera goes the
+// other way. Soft follows the llvmpipe beside it: the check passes on both. Where the two are
+// chosen apart (FFCOMPAT_LLVMPIPE_FMA), the check fails and names the cause.
+TEST(Cli, PixelCheckFollowsLlvmpipeWithOrWithoutFma) {
 #if defined(__x86_64__)
-  if (!__builtin_cpu_supports("fma")) GTEST_SKIP() << "llvmpipe has no FMA here: the native run is the other side";
+  if (!__builtin_cpu_supports("fma")) GTEST_SKIP() << "llvmpipe has no FMA here: the fused side cannot be run";
   const std::string args = "check --level pixel --scene cube --shade flat --normals face --cam-angle 279 --cam-height -0.5 --json --out " +
-                           tmp("no_fma").string();
-  const Result without = ffcompat(args, "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1");
-  EXPECT_EQ(without.status, 2);
-  const auto j = nlohmann::json::parse(without.out);
-  EXPECT_GT(j["max_diff"].get<int>(), 1);
-  EXPECT_EQ(j["known_mesa_deviations"], nlohmann::json::array({"llvmpipe-without-fma"}));
-  const Result with = ffcompat(args);
-  EXPECT_EQ(with.status, 0);
-  const auto k = nlohmann::json::parse(with.out);
-  EXPECT_EQ(k["max_diff"], 0);
-  EXPECT_EQ(k["known_mesa_deviations"], nlohmann::json::array());
+                           tmp("fma_rounding").string();
+  for (const char* caps : {"", "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1"}) {
+    const Result same = ffcompat(args, caps);
+    EXPECT_EQ(same.status, 0) << caps;
+    const auto j = nlohmann::json::parse(same.out);
+    EXPECT_EQ(j["max_diff"], 0) << caps;
+    EXPECT_EQ(j["known_mesa_deviations"], nlohmann::json::array()) << caps;
+  }
+  for (const char* apart : {"FFCOMPAT_LLVMPIPE_FMA=0", "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 FFCOMPAT_LLVMPIPE_FMA=1"}) {
+    const Result r = ffcompat(args, apart);
+    EXPECT_EQ(r.status, 2) << apart;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_GT(j["max_diff"].get<int>(), 1) << apart;
+    EXPECT_EQ(j["known_mesa_deviations"], nlohmann::json::array({"llvmpipe-fma-rounding"})) << apart;
+  }
+  EXPECT_NE(ffcompat(args, "FFCOMPAT_LLVMPIPE_FMA=yes").status, 0);
 #else
   GTEST_SKIP() << "GALLIUM_OVERRIDE_CPU_CAPS is x86's";
 #endif

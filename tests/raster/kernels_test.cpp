@@ -213,22 +213,30 @@ TEST(FusedMulAdd, EveryTargetRoundsOnceAsStdFma) {
   for (size_t i = 0; i < a.size(); ++i) want[i] = std::fma(a[i], b[i], c[i]);
   ASSERT_NE(want[0], float(double(a[0]) * double(b[0]) + double(c[0])))
       << "the first case no longer needs the halfway check: pick another";
-  // The row loop's own (row_loop.h, a and b a row's: in double without an FMA instruction).
-  for (size_t i = 0; i < a.size(); ++i) {
-    const float row = raster::detail::FusedRowScalar(a[i], b[i])(c[i]);
-    ASSERT_EQ(std::memcmp(&want[i], &row, 4), 0) << "row loop: fma(" << a[i] << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << row;
-  }
-  std::vector<std::string> targets = vector_targets();
-  if (targets.empty()) GTEST_SKIP() << "no vector target: Highway's portable one only";
-  for (const std::string& target : targets) {
-    const OnTarget on(target);
-    for (bool row : {false, true}) {  // the product made with the sum, or first (a row's)
-      raster::detail::fused_mul_add_wide(a.data(), b.data(), c.data(), got.data(), a.size(), row);
-      for (size_t i = 0; i < a.size(); ++i)
-        ASSERT_EQ(std::memcmp(&want[i], &got[i], 4), 0)
-            << target << (row ? " (row)" : "") << ": fma(" << a[i] << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << got[i];
+  const std::vector<std::string> targets = vector_targets();  // none: the scalar forms alone
+  // Fused (the default), and as llvmpipe without FMA rounds them: a product, then a sum
+  // (raster::llvmpipe_fma; FFCOMPAT_LLVMPIPE_FMA=0 runs this test in CTest raster_test_unfused).
+  const bool was = raster::llvmpipe_fma();
+  for (bool fused : {true, false}) {
+    raster::set_llvmpipe_fma(fused);
+    for (size_t i = 0; i < a.size(); ++i) want[i] = fused ? std::fma(a[i], b[i], c[i]) : a[i] * b[i] + c[i];
+    for (size_t i = 0; i < a.size(); ++i) {
+      const float row = raster::detail::FusedRowScalar(a[i], b[i])(c[i]);
+      ASSERT_EQ(std::memcmp(&want[i], &row, 4), 0) << "row loop, fused " << fused << ": " << a[i] << " * " << b[i] << " + " << c[i];
+      const float one = raster::llvmpipe_mul_add(a[i], b[i], c[i]);
+      ASSERT_EQ(std::memcmp(&want[i], &one, 4), 0) << "llvmpipe_mul_add, fused " << fused;
+    }
+    for (const std::string& target : targets) {
+      const OnTarget on(target);
+      for (bool row : {false, true}) {  // the product made with the sum, or first (a row's)
+        raster::detail::fused_mul_add_wide(a.data(), b.data(), c.data(), got.data(), a.size(), row);
+        for (size_t i = 0; i < a.size(); ++i)
+          ASSERT_EQ(std::memcmp(&want[i], &got[i], 4), 0) << target << (row ? " (row)" : "") << ", fused " << fused << ": fma(" << a[i]
+                                                          << ", " << b[i] << ", " << c[i] << ") = " << want[i] << ", got " << got[i];
+      }
     }
   }
+  raster::set_llvmpipe_fma(was);
 }
 
 }  // namespace ffc

@@ -7,6 +7,7 @@
 #include "backends/mesa/mesa_platform.h"
 #include "gl/dispatch.h"
 #include "platform/platform_choice.h"
+#include "raster/raster.h"
 
 namespace ffc::backends {
 
@@ -71,8 +72,15 @@ bool llvmpipe_fuses() {
 #endif
 }
 
+// Soft rounds its copies of llvmpipe's multiply-adds as the llvmpipe beside it does (fused where
+// it fuses), unless FFCOMPAT_LLVMPIPE_FMA chose: compared with Mesa, like with like.
+static void follow_llvmpipe() {
+  if (!raster::configure_llvmpipe_fma_from_environment()) raster::set_llvmpipe_fma(llvmpipe_fuses());
+}
+
 MesaBackend::MesaBackend(std::string platform) : platform_(std::move(platform)) {
   platform::choose_mesa_platform(kOsMesa, kEgl, platform_.c_str());  // throws for a bad one
+  follow_llvmpipe();
 }
 
 MesaBackend::~MesaBackend() = default;
@@ -81,6 +89,7 @@ void MesaBackend::begin(int width, int height) {
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     throw std::runtime_error("mesa: framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
                              " is outside 1..16384");
+  follow_llvmpipe();  // GALLIUM_OVERRIDE_CPU_CAPS may have changed since (bench --mesa-isa same)
   // A fresh context per begin(): every picture starts from GL's default state. The old one goes
   // first, its drawing finished.
   context_.reset();

@@ -33,9 +33,10 @@ HWY_INLINE hn::Vec<DI> LanesFrom(DI di, int32_t first) {
 // Room for one vector of 32-bit lanes on any target.
 constexpr size_t kMaxLanes32 = HWY_MAX_BYTES / 4;
 
-// a * b + c rounded once, as depth_at's std::fma: one instruction where the target has it (AVX2
-// and AVX-512, where Highway's MulAdd is fused; NEON and SVE on AArch64), in double on SSE4 and
-// SSSE3 (MulAdd there is a product and a sum, two roundings), lane by lane elsewhere.
+// a * b + c as llvmpipe_mul_add (raster.h): where fused (llvmpipe_fma(), the default), rounded
+// once, as std::fma: one instruction where the target has it (AVX2 and AVX-512, where Highway's
+// MulAdd is fused; NEON and SVE on AArch64), in double on SSE4 and SSSE3 (MulAdd there is a
+// product and a sum, two roundings), lane by lane elsewhere; else a product and a sum.
 template <class DF, class V>
 HWY_INLINE V FusedMulAddLanes(DF df, V a, V b, V c) {
   alignas(64) float x[kMaxLanes32], y[kMaxLanes32], z[kMaxLanes32];
@@ -47,6 +48,7 @@ HWY_INLINE V FusedMulAddLanes(DF df, V a, V b, V c) {
 #if (HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2) || (HWY_ARCH_ARM_A64 && HWY_TARGET != HWY_EMU128 && HWY_TARGET != HWY_SCALAR)
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF, V a, V b, V c) {
+  if (HWY_UNLIKELY(!llvmpipe_fma())) return hn::Add(hn::Mul(a, b), c);
   return hn::MulAdd(a, b, c);
 }
 #define FFCOMPAT_FMA_IN_DOUBLE 0
@@ -78,6 +80,7 @@ HWY_INLINE hn::Vec<DF> FusedFromDouble(DF df, VD lo, VD hi, Lanes&& lanes) {
 }
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
+  if (HWY_UNLIKELY(!llvmpipe_fma())) return hn::Add(hn::Mul(a, b), c);
   const hn::Half<DF> dh;
   const hn::Rebind<double, decltype(dh)> dd;
   auto exact = [&](auto x, auto y, auto z) {
@@ -91,6 +94,7 @@ HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
 #define FFCOMPAT_FMA_IN_DOUBLE 0
 template <class DF, class V>
 HWY_INLINE V FusedMulAdd(DF df, V a, V b, V c) {
+  if (HWY_UNLIKELY(!llvmpipe_fma())) return hn::Add(hn::Mul(a, b), c);
   return FusedMulAddLanes(df, a, b, c);
 }
 #endif
@@ -104,13 +108,15 @@ struct FusedRow {
 #if FFCOMPAT_FMA_IN_DOUBLE
   using DD = hn::Rebind<double, hn::Half<DF>>;
   hn::Vec<DD> ab_lo, ab_hi;
-  HWY_INLINE FusedRow(DF, V a_, V b_) : a(a_), b(b_) {
+  bool fused;
+  HWY_INLINE FusedRow(DF, V a_, V b_) : a(a_), b(b_), fused(llvmpipe_fma()) {
     const hn::Half<DF> dh;
     const DD dd;
     ab_lo = hn::Mul(hn::PromoteTo(dd, hn::LowerHalf(dh, a)), hn::PromoteTo(dd, hn::LowerHalf(dh, b)));
     ab_hi = hn::Mul(hn::PromoteTo(dd, hn::UpperHalf(dh, a)), hn::PromoteTo(dd, hn::UpperHalf(dh, b)));
   }
   HWY_INLINE V operator()(DF df, V c) const {
+    if (HWY_UNLIKELY(!fused)) return hn::Add(hn::Mul(a, b), c);
     const hn::Half<DF> dh;
     const DD dd;
     return FusedFromDouble(df, hn::Add(ab_lo, hn::PromoteTo(dd, hn::LowerHalf(dh, c))), hn::Add(ab_hi, hn::PromoteTo(dd, hn::UpperHalf(dh, c))),
