@@ -187,5 +187,28 @@ TEST(Known, NegativeStrideIsExplainedByName) {
   for (const auto& [m, name] : c.explained) EXPECT_EQ(name, "mesa-negative-stride-applied") << m.key;
 }
 
+// An enabled vertex array never given a pointer, drawn by a GL_COMPILE_AND_EXECUTE list: Mesa
+// reads address 0 and crashes (repro null_vertex_array_list_crash); named. Not with a pointer
+// given, nor for a draw of no vertex.
+TEST(Known, NullArrayCrashIsNamedOnlyWhereAnArrayHadNoPointer) {
+  const Stream s = {make_call("glEnableClientState", {n(GL_VERTEX_ARRAY)}), make_call("glNewList", {n(2), n(GL_COMPILE_AND_EXECUTE)}),
+                    make_call("glDrawArrays", {n(GL_TRIANGLE_STRIP), n(0), n(2)})};
+  const Checked c = check(s, {});
+  EXPECT_TRUE(c.unexplained.empty()) << (c.unexplained.empty() ? "" : c.unexplained[0].key);
+  ASSERT_FALSE(c.explained.empty());
+  EXPECT_EQ(c.explained[0].first.kind, "crash");
+  EXPECT_EQ(c.explained[0].second, "soft-null-array-pointer-crash");
+  // The same crash, planted, after a pointer was given or with a draw of no vertex: not this name.
+  const Mismatch crash{"crash", "crash mesa glDrawArrays", 3, ""};
+  SideResult mesa, soft;
+  soft.errors.assign(4, GL_NO_ERROR), mesa.errors = soft.errors;
+  Stream given = {s[0], make_call("glVertexPointer", {n(2), n(GL_FLOAT), n(0), Arg::values(GL_FLOAT, {0, 0, 1, 1})}), s[1], s[2]};
+  const KnownDeviation* named = explain(given, crash, mesa, soft);
+  EXPECT_TRUE(named == nullptr || named->name != "soft-null-array-pointer-crash");
+  Stream none = {s[0], s[1], make_call("glDrawArrays", {n(GL_TRIANGLE_STRIP), n(0), n(0)}), make_call("glFinish", {})};
+  named = explain(none, crash, mesa, soft);
+  EXPECT_TRUE(named == nullptr || named->name != "soft-null-array-pointer-crash");
+}
+
 }  // namespace
 }  // namespace ffc::difftest
