@@ -298,10 +298,10 @@ const std::vector<KnownDeviation>& known_deviations() {
          return m.call >= 0 && null_array_draw(s, size_t(m.call), soft, true);
        }},
       // The same read of address 0 crashing Mesa, at the draw or, its heap corrupted, later wherever
-      // malloc next looks (measured, seed 299792 stream 2831664394777852868: glEnableClientState
-      // (GL_VERTEX_ARRAY), then a GL_COMPILE_AND_EXECUTE list's glDrawArrays(GL_TRIANGLE_STRIP, 0, 2):
-      // a segfault there, or in the whole stream an abort in malloc at the read-back or at a
-      // glNormal3dv; repro null_vertex_array_list_crash).
+      // malloc next looks. Measured: glEnableClientState(GL_VERTEX_ARRAY), then a
+      // GL_COMPILE_AND_EXECUTE list's glDrawArrays(GL_TRIANGLE_STRIP, 0, 2) segfaults there (repro
+      // null_vertex_array_list_crash; found by shrinking seed 299792 stream 2831664394777852868's
+      // crash as any Mesa crash: that stream's own, an abort in malloc, has another cause).
       {"soft-null-array-pointer-crash",
        "Mesa crashes at or after a draw that read an enabled array never given a pointer (address 0; its heap corrupted, "
        "the crash where malloc next notices); soft reads nothing",
