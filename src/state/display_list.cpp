@@ -12,6 +12,14 @@
 
 namespace ffc::state {
 
+// Row 71 (Context::note_node_primitive): whether a primitive of `count` vertices in `mode` after one of
+// `last_count` in `last`, in one vertex list, makes Mesa 22.3 corrupt its heap.
+static bool two_then_one_crashes(GLenum last, int last_count, GLenum mode, int count) {
+  if (last_count != 2 || count != 1) return false;
+  const bool two = last == GL_TRIANGLES || last == GL_TRIANGLE_STRIP || last == GL_TRIANGLE_FAN || last == GL_POLYGON;
+  return (two && (mode == GL_QUADS || mode == GL_QUAD_STRIP)) || (last == GL_TRIANGLE_STRIP && mode == GL_TRIANGLE_STRIP);
+}
+
 void DisplayList::replay() const {
   const unsigned char* p = bytes_.data();
   const unsigned char* const end = p + bytes_.size();
@@ -310,7 +318,7 @@ void Context::hold_back(int kind, int size) {
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
     if (lists_.vertices > 0) lists_.compiling.note_primitive(lists_.open_mode, lists_.vertices);
-    if (lists_.open) note_node_mode(lists_.open_mode, lists_.vertices + lists_.wrap_copies);
+    if (lists_.open) note_node_primitive(true);  // the wrap compiles the vertex list: row 71's pair too
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
     if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
     split_list_node(kind > 0 ? kind & 3 : 0);  // the vertex list before the wrap is compiled first, then marked
@@ -609,7 +617,15 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, lists_.wrapped = false, ++lists_.prims;
     lists_.wrap_copies = 0, lists_.closing_loop = lists_.loop_restarted = false;
   }
-  if (&l == &lists_.compiling) start_list_node(true), lists_.node_last_mode = 0;  // no pair across a draw (not measured)
+  if (&l == &lists_.compiling) {
+    start_list_node(true);
+    // A compiled draw is the second of row 71's pair after another draw (measured: a GL_TRIANGLES
+    // draw of two, then a GL_QUADS draw of one), and the first before a glBegin.
+    const int drawn = vertex_array_.enabled ? int(count) : 0;
+    if (lists_.node_last_draw && two_then_one_crashes(lists_.node_last_mode, lists_.node_last_count, mode, drawn))
+      deviations_.insert(kListTwoThenQuadCrash);
+    lists_.node_last_mode = mode, lists_.node_last_count = drawn, lists_.node_last_draw = true;
+  }
   if (!(ends_open && executing)) l.record<list_begin>(mode);
   lists_.compiling_draw = true;
   for (GLsizei k = 0; k < count; ++k) {
@@ -674,17 +690,20 @@ void Context::start_list_node(bool draw) {
 
 // Measured by the seed-8086 helper (repro list_two_then_quad_crash.txt, docs/fidelity.md): Mesa 22.3
 // aborts on a corrupted heap (glibc's "free(): invalid next size") at the flush that compiles a
-// vertex list holding a GL_TRIANGLES, GL_TRIANGLE_FAN or GL_POLYGON of two vertices (sent, or the
-// two a wrapped polygon copies) followed by a GL_QUADS of one (ended, or open at the flush), or at a
-// later call; in both list modes; not with the quad first, a point between, a quad of two or three.
-// The write that overflows was not found in the source. `open`: the primitive is still open.
+// vertex list holding a GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN or GL_POLYGON of two
+// vertices (sent, or the two a wrapped polygon copies) followed by a GL_QUADS or GL_QUAD_STRIP of one
+// (ended, or open at the flush), or a GL_TRIANGLE_STRIP of two followed by one of one, or at a later
+// call; in both list modes; not with the quad first, a point between, a quad of two or three, nor
+// other pairs of modes (measured over every pair of the six triangle and quad modes, one to three
+// vertices each; seed 299792 stream 2831664394777852868 found the strip and the quad strip; repro
+// list_strip_then_quad_crash.txt; two_then_one_crashes). A compiled draw counts as either
+// primitive, but a draw of one quad after a glBegin/glEnd pair did not crash (measured). The write
+// that overflows was not found in the source. `open`: the primitive is still open.
 void Context::note_node_primitive(bool open) {
   const int count = lists_.vertices + lists_.wrap_copies;  // its vertices in this vertex list
-  const GLenum last = lists_.node_last_mode;
-  if (lists_.node_last_count == 2 && (last == GL_TRIANGLES || last == GL_TRIANGLE_FAN || last == GL_POLYGON) &&
-      lists_.open_mode == GL_QUADS && count == 1)
+  if (two_then_one_crashes(lists_.node_last_mode, lists_.node_last_count, lists_.open_mode, count))
     deviations_.insert(kListTwoThenQuadCrash);
-  if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count;
+  if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count, lists_.node_last_draw = false;
   note_node_mode(lists_.open_mode, count);
 }
 

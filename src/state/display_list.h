@@ -237,6 +237,7 @@ struct ListState {
   // it has there (kListTwoThenQuadCrash, Context::note_node_primitive).
   GLenum node_last_mode = 0;
   int node_last_count = 0;
+  bool node_last_draw = false;  // the last was a compiled draw
   // The modes of the open vertex list's primitives with a vertex, in order (Context::note_node_mode,
   // close_node_modes).
   std::vector<GLenum> node_modes;
