@@ -245,6 +245,7 @@ class Context {
   bool list_executes() const { return lists_.mode == GL_COMPILE_AND_EXECUTE; }
   DisplayList& list_held_back() { return lists_.held_back; }
   void run_held_back(bool new_format = true);  // executes the vertex-stream calls GL_COMPILE_AND_EXECUTE held back
+  void note_list_primitive(GLenum mode, int vertices);  // a primitive compiled (DisplayList::note_primitive)
   void hold_back(int kind, int size = 0);  // a vertex-stream call is held back (kind: see compiled_only; size: components)
   void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
   void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush

@@ -248,6 +248,13 @@ void Context::note_loop_first_vertex(DisplayList& l) {
   if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 1 && !lists_.wrapped) l.record<list_loop_first_vertex>();
 }
 
+// A primitive of `vertices` compiled into the list; in GL_COMPILE_AND_EXECUTE also among those the
+// executing side runs at the next flush (ListState::held_incomplete, run_held_back).
+void Context::note_list_primitive(GLenum mode, int vertices) {
+  lists_.compiling.note_primitive(mode, vertices);
+  if (list_executes() && vertices < fewest_vertices(mode)) lists_.held_incomplete = true;
+}
+
 void Context::run_held_back(bool new_format) {
   const bool closing_loop = lists_.closing_loop;
   const bool empty_loop = lists_.vertices == 0;  // its closing copy is of a vertex never stored (row 68)
@@ -263,6 +270,12 @@ void Context::run_held_back(bool new_format) {
   lists_.vertices = lists_.stored = 0;
   lists_.prims = new_format ? 0 : 1;
   if (lists_.held_back.empty()) return;
+  // Mesa's executing side plays the compiled vertex list back as glCallList does: a primitive too
+  // short to draw is fed back padded (row 66; measured, seed 299792 stream 17539029581890894252: a
+  // GL_LINE_LOOP of one vertex, then a glArrayElement outside glBegin flushing it, fed back as a line
+  // from the vertex to itself; repro list_executing_incomplete_fed_back.txt).
+  if (lists_.held_incomplete && render_mode_ != GL_RENDER) deviations_.insert(kListIncompleteFedBack);
+  lists_.held_incomplete = false;
   ++lists_.depth;  // nothing recorded while they run
   lists_.held_back.replay();
   --lists_.depth;
@@ -317,7 +330,7 @@ void Context::hold_back(int kind, int size) {
     // The part of the primitive the wrap cut off is a primitive of its own in the list: too short to
     // draw, Mesa's playback in feedback pads it (measured: GL_TRIANGLES wrapped after one vertex is
     // fed back as that vertex three times before the rest; kListIncompleteFedBack).
-    if (lists_.vertices > 0) lists_.compiling.note_primitive(lists_.open_mode, lists_.vertices);
+    if (lists_.vertices > 0) note_list_primitive(lists_.open_mode, lists_.vertices);
     if (lists_.open) note_node_primitive(true);  // the wrap compiles the vertex list: row 71's pair too
     const int copies = lists_.open ? wrap_copied_vertices(lists_.open_mode, lists_.vertices + lists_.wrap_copies) : 0;
     if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
@@ -635,7 +648,7 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
       l.record<list_loop_first_vertex>();
   }
   lists_.compiling_draw = false;
-  if (&l == &lists_.compiling) l.note_primitive(mode, vertex_array_.enabled ? int(count) : 0);
+  if (&l == &lists_.compiling) note_list_primitive(mode, vertex_array_.enabled ? int(count) : 0);
   if (format) note_node_mode(mode, lists_.vertices + lists_.wrap_copies);
   if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();

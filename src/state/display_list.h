@@ -238,6 +238,9 @@ struct ListState {
   GLenum node_last_mode = 0;
   int node_last_count = 0;
   bool node_last_draw = false;  // the last was a compiled draw
+  // GL_COMPILE_AND_EXECUTE: a primitive too short to draw is among the calls held back since the last
+  // flush (run_held_back: Mesa's executing side feeds it back padded, kListIncompleteFedBack).
+  bool held_incomplete = false;
   // The modes of the open vertex list's primitives with a vertex, in order (Context::note_node_mode,
   // close_node_modes).
   std::vector<GLenum> node_modes;

@@ -130,7 +130,7 @@ bool compiled_only(const A&... a) {
       c->note_node_primitive(false);
       if (ls.had_vertex) ls.carry |= ls.trailing;  // left in Mesa's vertex template (Context::list_vertex_compiled)
       ls.open = false, ls.closing_loop = ls.open_mode == GL_LINE_LOOP;
-      l->note_primitive(ls.open_mode, ls.primitive_vertices);
+      c->note_list_primitive(ls.open_mode, ls.primitive_vertices);
     }
   }
   if constexpr (same_entry<Fn, &Begin>()) c->start_list_node(false);
