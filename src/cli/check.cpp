@@ -82,7 +82,7 @@ void add_check(CLI::App& app) {
                     pass ? "" : ("; pictures in " + *out).c_str());
         for (const std::string& n : named)
           std::printf("known Mesa deviation: %s (llvmpipe here %s its multiply-adds and soft %s, FFCOMPAT_LLVMPIPE_FMA: "
-                      "depth ties and edges may differ, docs/deviations.md row 73)\n",
+                      "depth ties and edges may differ, docs/deviations.md row 74)\n",
                       n.c_str(), backends::llvmpipe_fuses() ? "fuses" : "does not fuse", raster::llvmpipe_fma() ? "does" : "does not");
       }
       if (!pass) throw CLI::RuntimeError(2);

@@ -147,7 +147,7 @@ struct WindowVertex {
 // How llvmpipe's multiply-adds round where soft copies them (the window mapping, a fragment's
 // depth): its shaders use llvm.fmuladd, which LLVM fuses (one rounding) only on a CPU with FMA;
 // on an x86 CPU without (or under GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 and below) they are a product
-// and a sum, and ties between triangles land elsewhere (docs/deviations.md row 73). Fused by
+// and a sum, and ties between triangles land elsewhere (docs/deviations.md row 74). Fused by
 // default; FFCOMPAT_LLVMPIPE_FMA=0 (read at the first context) or set_llvmpipe_fma(false) for the
 // other. Process-wide, as Mesa's choice is; the lab sets it to the Mesa it runs beside.
 namespace detail {

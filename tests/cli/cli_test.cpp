@@ -311,7 +311,7 @@ TEST(Cli, BenchMesaIsaSameRestrictsLlvmpipeToSoftsTarget) {
   EXPECT_NE(ffcompat("bench --scene cube --frames 1 --mesa-isa sse9").status, 0);
 }
 
-// Deviation 73 (docs/deviations.md): llvmpipe without FMA (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1) rounds
+// Deviation 74 (docs/deviations.md): llvmpipe without FMA (GALLIUM_OVERRIDE_CPU_CAPS=sse4.1) rounds
 // its multiply-adds twice, and a depth tie on the seed cube's silhouette from this camera goes the
 // other way. Soft follows the llvmpipe beside it: the check passes on both. Where the two are
 // chosen apart (FFCOMPAT_LLVMPIPE_FMA), the check fails and names the cause.

@@ -27,7 +27,7 @@ void* mesa_proc_address(const std::string& platform, const char* name);
 // process: on x86 only with FMA3, which Mesa takes with AVX (util/u_cpu_detect.c) and drops under
 // GALLIUM_OVERRIDE_CPU_CAPS=nosse|sse|sse2|sse3|ssse3|sse4.1; AArch64 always fuses. Soft follows
 // the fused llvmpipe on every target, so where this is false depth ties and edges can differ
-// (docs/deviations.md row 73, "llvmpipe-without-fma").
+// (docs/deviations.md row 74, "llvmpipe-fma-rounding").
 bool llvmpipe_fuses();
 
 class MesaBackend final : public Backend {
