@@ -187,5 +187,28 @@ TEST(Known, NegativeStrideIsExplainedByName) {
   for (const auto& [m, name] : c.explained) EXPECT_EQ(name, "mesa-negative-stride-applied") << m.key;
 }
 
+TEST(Known, NegativeStrideHiddenInsideExecutingBegin) {
+  // Seed 577215 stream 11801004284260778288: the glVertexPointer runs while GL_COMPILE_AND_EXECUTE's
+  // executing side is inside the list's wrapped glBegin, where glGetError returns no error on either
+  // side; Mesa sets the array all the same, and the table must still name it.
+  const Stream s = {make_call("glNewList", {n(1), n(GL_COMPILE_AND_EXECUTE)}), make_call("glBegin", {n(GL_QUAD_STRIP)}),
+                    make_call("glVertex3f", {n(0), n(0), n(0)}), make_call("glColor3fv", {Arg::values(GL_FLOAT, {0, 0, 0})}),
+                    make_call("glVertexPointer", {n(2), n(GL_SHORT), n(-1), Arg::values(GL_SHORT, {0, 0, 1, 1})}),
+                    make_call("checkpoint", {})};
+  const Checked c = check(s, {});
+  EXPECT_TRUE(c.unexplained.empty()) << (c.unexplained.empty() ? "" : c.unexplained[0].key);
+  ASSERT_FALSE(c.explained.empty());
+  for (const auto& [m, name] : c.explained) EXPECT_EQ(name, "mesa-negative-stride-applied") << m.key;
+  // Not a pointer call soft refused for another reason with Mesa showing nothing (soft's own error
+  // shows), nor one with a stride that is not negative.
+  const Mismatch size{"state", "state glGetIntegerv(GL_VERTEX_ARRAY_SIZE)", 5, ""};
+  SideResult refused = c.soft;
+  refused.errors[4] = GL_INVALID_OPERATION;
+  EXPECT_EQ(explain(s, size, c.mesa, refused), nullptr);
+  Stream positive = s;
+  positive[4].args[2] = n(4);
+  EXPECT_EQ(explain(positive, size, c.mesa, c.soft), nullptr);
+}
+
 }  // namespace
 }  // namespace ffc::difftest
