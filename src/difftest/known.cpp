@@ -228,6 +228,39 @@ bool list_modes_change_twice(const Stream& s, const SideResult& soft, size_t at)
   return false;
 }
 
+// Whether m can show a glMaterialf or glMateriali with a colour's pname (four values) compiled into a
+// display list before it (taken by soft: no error): Mesa's list keeps four floats read from the one
+// parameter, three of them memory it never wrote, and sets the material from them when the list
+// runs (measured, seed 577215 stream 16382461972266344557: glMaterialf(GL_FRONT,
+// GL_AMBIENT_AND_DIFFUSE, 76) in a GL_COMPILE list reads back green, blue and alpha as -6.4, -20414
+// or 0 from one run to the next; glMateriali(GL_BACK, GL_SPECULAR) too; the same call outside a list
+// read back (76, 0, 0, 0) every time). GL 2.1 makes the call GL_INVALID_ENUM; soft sets (v, 0, 0, 0),
+// as Context::Materialf. Explains that material's reads (a face the call set) and what was drawn.
+bool list_materialf_colour(const Stream& s, const Mismatch& m, const SideResult& soft) {
+  if (m.call < 0) return false;
+  const bool drawing = m.kind == "feedback" || m.kind == "pixels" || m.kind == "readpixels";
+  const bool material = m.kind == "state" && m.key.find("glGetMaterialfv") != std::string::npos;
+  if (!drawing && !material) return false;
+  bool compiling = false;
+  for (size_t i = 0; i < size_t(m.call) && i < s.size(); ++i) {
+    const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
+    const std::string& n = name_of(s[i]);
+    if (n == "glNewList" && ok) compiling = true;
+    if (n == "glEndList") compiling = false;
+    if (!compiling || !ok || (n != "glMaterialf" && n != "glMateriali")) continue;
+    const auto face = GLenum(s[i].args[0].num), pname = GLenum(s[i].args[1].num);
+    const bool colour = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR || pname == GL_EMISSION ||
+                        pname == GL_AMBIENT_AND_DIFFUSE;
+    if (!colour) continue;
+    if (drawing) return true;
+    auto reads = [&](GLenum e) { return m.key.find(enum_name(e) + ")") != std::string::npos; };
+    const bool face_read = face == GL_FRONT_AND_BACK || m.key.find("(" + enum_name(face) + ",") != std::string::npos;
+    const bool pname_read = pname == GL_AMBIENT_AND_DIFFUSE ? reads(GL_AMBIENT) || reads(GL_DIFFUSE) : reads(pname);
+    if (face_read && pname_read) return true;
+  }
+  return false;
+}
+
 // A deviation soft reported while drawing, which can only change what was drawn.
 // A deviation soft names when it draws: it explains what drawing shows (pictures, feedback, the
 // selection buffer's hit records and the count glRenderMode returns) in a stream where soft named it.
@@ -445,6 +478,13 @@ const std::vector<KnownDeviation>& known_deviations() {
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),
                                                   state::kListEmptyLoopCurrent) != soft.deviations.end();
+       }},
+      {"mesa-list-materialf-colour-unwritten",
+       "glMaterialf or glMateriali with a colour's pname (GL_INVALID_ENUM in GL 2.1) compiled into a display list: "
+       "Mesa's list keeps four values read from the one parameter, three of them memory it never wrote, and sets "
+       "the material from them when the list runs; soft sets (v, 0, 0, 0)",
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return list_materialf_colour(s, m, soft);
        }},
       drawn("nonfinite-vertex", state::kNonfiniteVertex),     // row 46
       drawn("unfilled-clipped", state::kUnfilledClipped),     // row 62

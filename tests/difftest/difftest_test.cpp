@@ -210,5 +210,39 @@ TEST(Known, NegativeStrideHiddenInsideExecutingBegin) {
   EXPECT_EQ(explain(positive, size, c.mesa, c.soft), nullptr);
 }
 
+TEST(Known, ListMaterialfColourIsNamedAlone) {
+  // Mesa's garbage differs from run to run, so the recogniser is asked directly: the compiled
+  // glMaterialf(GL_FRONT, GL_AMBIENT_AND_DIFFUSE) explains GL_FRONT's ambient and diffuse read back
+  // after the list; not GL_BACK's, not its specular, not the same call outside a list, not a
+  // compiled glMaterialf(GL_SHININESS) (both sides agree on it).
+  const auto stream = [](bool listed, GLenum pname) {
+    Stream s;
+    if (listed) s.push_back(make_call("glNewList", {n(4), n(GL_COMPILE)}));
+    s.push_back(make_call("glMaterialf", {n(GL_FRONT), n(pname), n(76)}));
+    if (listed) s.push_back(make_call("glEndList", {})), s.push_back(make_call("glCallList", {n(4)}));
+    s.push_back(make_call("checkpoint", {}));
+    return s;
+  };
+  const auto read = [](const Stream& s, const char* what) {
+    return Mismatch{"state", std::string("state glGetMaterialfv(") + what + ")", int(s.size()) - 1, ""};
+  };
+  SideResult ok;
+  ok.errors.assign(8, GL_NO_ERROR);
+  const auto named = [&](const Stream& s, const Mismatch& m) {
+    const KnownDeviation* d = explain(s, m, ok, ok);
+    return d && d->name == "mesa-list-materialf-colour-unwritten";
+  };
+  const Stream listed = stream(true, GL_AMBIENT_AND_DIFFUSE);
+  EXPECT_TRUE(named(listed, read(listed, "GL_FRONT, GL_AMBIENT")));
+  EXPECT_TRUE(named(listed, read(listed, "GL_FRONT, GL_DIFFUSE")));
+  EXPECT_TRUE(named(listed, Mismatch{"pixels", "pixels", int(listed.size()) - 1, ""}));
+  EXPECT_FALSE(named(listed, read(listed, "GL_BACK, GL_AMBIENT")));
+  EXPECT_FALSE(named(listed, read(listed, "GL_FRONT, GL_SPECULAR")));
+  const Stream outside = stream(false, GL_AMBIENT_AND_DIFFUSE);
+  EXPECT_FALSE(named(outside, read(outside, "GL_FRONT, GL_AMBIENT")));
+  const Stream shininess = stream(true, GL_SHININESS);
+  EXPECT_FALSE(named(shininess, read(shininess, "GL_FRONT, GL_SHININESS")));
+}
+
 }  // namespace
 }  // namespace ffc::difftest
