@@ -13,6 +13,7 @@
 #include "difftest/runner.h"
 #include "difftest/shrink.h"
 #include "difftest/stream.h"
+#include "state/display_list.h"
 
 namespace ffc::difftest {
 namespace {
@@ -242,6 +243,23 @@ TEST(Known, ListMaterialfColourIsNamedAlone) {
   EXPECT_FALSE(named(outside, read(outside, "GL_FRONT, GL_AMBIENT")));
   const Stream shininess = stream(true, GL_SHININESS);
   EXPECT_FALSE(named(shininess, read(shininess, "GL_FRONT, GL_SHININESS")));
+}
+
+TEST(Known, CurrentValuesReadByTheStreamsGet) {
+  // Row 65's current colour read by the stream's own glGetFloatv (an output, seed 577215 stream
+  // 5988082728378332109) is named as at a checkpoint; another value read so is not, nor the colour
+  // where soft's model met no wrapped line loop.
+  const Stream s = {make_call("glGetFloatv", {n(GL_CURRENT_COLOR), Arg::out(16)}), make_call("checkpoint", {})};
+  SideResult mesa, soft;
+  mesa.errors.assign(2, GL_NO_ERROR), soft.errors = mesa.errors;
+  soft.deviations = {state::kListLineLoopCurrent};
+  const Mismatch colour{"output", "output glGetFloatv(GL_CURRENT_COLOR)", 0, ""};
+  const KnownDeviation* d = explain(s, colour, mesa, soft);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->name, "mesa-list-line-loop-wrap-current");
+  EXPECT_EQ(explain(s, Mismatch{"output", "output glGetFloatv(GL_MODELVIEW_MATRIX)", 0, ""}, mesa, soft), nullptr);
+  soft.deviations.clear();
+  EXPECT_EQ(explain(s, colour, mesa, soft), nullptr);
 }
 
 }  // namespace
