@@ -256,6 +256,11 @@ void Context::run_held_back(bool new_format) {
   lists_.held_back.replay();
   --lists_.depth;
   lists_.held_back.clear();
+  // Their glEnd ended the wrapped primitive on the executing side, so glGet reads the current values
+  // again (ListState::shown), a flush that keeps the format too: measured (seed 577215 stream
+  // 15458122814594184789, repro list_store_fill_ends_shown.txt), a GL_POINTS wrapped by its first
+  // glNormal, ended, then a glDrawArrays too large for the store reads back the normal sent.
+  if (!in_begin_) lists_.shown = false;
   if (closing_loop && empty_loop) deviations_.insert(kListEmptyLoopCurrent);
   else if (closing_loop && (format & 1)) normal_ = lists_.loop_first_normal;
   if (closing_loop && !empty_loop && (format & 2)) color_ = lists_.loop_first_color;
