@@ -1,5 +1,7 @@
 #include "difftest/known.h"
 
+#include <set>
+
 #include "state/context.h"
 #include "state/display_list.h"
 
@@ -125,6 +127,14 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft, bool* mat
   bool compiling = false, open = false;
   ArraysOn arrays;
   bool attribute = false, vertex = false, materials = false;
+  // A glMaterial first sent (its face and pname) after the last vertex of a GL_POINTS: it wraps the
+  // store with nothing to copy, and the vertex list after the wrap holds the material and no vertex
+  // (measured, seed 161803 stream 2269: glBegin(GL_POINTS), a vertex, glMaterialf(GL_FRONT,
+  // GL_SHININESS, 1), glEnd, called: the shininess reads back 0; repro
+  // list_material_after_last_point.txt). Soft's store model counts no material (Context::hold_back).
+  std::set<std::pair<double, double>> sent;
+  bool trailing_material = false;
+  GLenum mode = 0;
   for (size_t i = 0; i < s.size(); ++i) {
     const bool ok = i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR;
     const std::string& n = name_of(s[i]);
@@ -134,19 +144,26 @@ int vertexless_list_primitive(const Stream& s, const SideResult& soft, bool* mat
     if (!compiling) continue;
     const bool element_attributes = arrays.normal || arrays.color;
     // A glBegin inside the list's glBegin is a compile error and begins nothing.
-    if (n == "glBegin" && !open) open = true, attribute = vertex = materials = false;
-    else if (n == "glEnd" && open) {
+    if (n == "glBegin" && !open) {
+      open = true, attribute = vertex = materials = trailing_material = false;
+      mode = GLenum(s[i].args[0].num), sent.clear();
+    } else if (n == "glEnd" && open) {
       open = false;
-      if (attribute && !vertex) {
-        if (material) *material = materials;
+      if ((attribute && !vertex) || trailing_material) {
+        if (material) *material = materials || trailing_material;
         return int(i);
       }
-    } else if (open && starts(n, "glVertex") && n != "glVertexPointer") vertex = true;  // the pointer is client state
+    } else if (open && starts(n, "glVertex") && n != "glVertexPointer") vertex = true, trailing_material = false;  // the pointer is client state
     else if (open && n == "glArrayElement") attribute |= element_attributes, vertex |= arrays.vertex;
     else if (open && (starts(n, "glNormal3") || starts(n, "glColor") || starts(n, "glTexCoord"))) attribute = true;
     // A glMaterial there too (measured, seed 161803 stream 2269: glMaterialf(GL_FRONT, GL_SHININESS, 0)
     // alone in a list's GL_POINTS reads back 1.5e16; repro list_materialf_inside_begin.txt).
-    else if (open && starts(n, "glMaterial")) attribute = materials = true;
+    else if (open && starts(n, "glMaterial")) {
+      if (vertex && mode == GL_POINTS && ok && sent.insert({s[i].args[0].num, s[i].args[1].num}).second)
+        trailing_material = true;
+      else sent.insert({s[i].args[0].num, s[i].args[1].num});
+      if (!vertex) attribute = materials = true;
+    }
     else if (!open && (n == "glDrawArrays" || n == "glDrawElements") && !arrays.vertex && element_attributes &&
              s[i].args[n == "glDrawArrays" ? 2 : 1].num > 0)
       return int(i);

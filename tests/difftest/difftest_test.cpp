@@ -262,5 +262,33 @@ TEST(Known, CurrentValuesReadByTheStreamsGet) {
   EXPECT_EQ(explain(s, colour, mesa, soft), nullptr);
 }
 
+TEST(Known, MaterialAfterLastPointIsNamedAlone) {
+  // Seed 161803 stream 2269: a glMaterialf after the last vertex of a list's GL_POINTS leaves a vertex
+  // list with the material and no vertex (row 55); the shininess read back after glCallList is named.
+  // Not where the material comes before the vertex, nor after the last vertex of a GL_LINE_STRIP
+  // (its wrap copies the vertex).
+  const auto stream = [](GLenum mode, bool after) {
+    Stream s = {make_call("glNewList", {n(5), n(GL_COMPILE)}), make_call("glBegin", {n(mode)})};
+    const Call material = make_call("glMaterialf", {n(GL_FRONT), n(GL_SHININESS), n(1)});
+    if (!after) s.push_back(material);
+    s.push_back(make_call("glVertex3f", {n(0), n(0), n(0)}));
+    if (after) s.push_back(material);
+    for (const char* f : {"glEnd", "glEndList"}) s.push_back(make_call(f, {}));
+    s.push_back(make_call("glCallList", {n(5)}));
+    s.push_back(make_call("checkpoint", {}));
+    return s;
+  };
+  SideResult ok;
+  ok.errors.assign(8, GL_NO_ERROR);
+  const auto named = [&](const Stream& s, const char* what) {
+    const Mismatch m{"state", std::string("state glGetMaterialfv(") + what + ")", int(s.size()) - 1, ""};
+    const KnownDeviation* d = explain(s, m, ok, ok);
+    return d && d->name == "mesa-list-primitive-without-vertex";
+  };
+  EXPECT_TRUE(named(stream(GL_POINTS, true), "GL_FRONT, GL_SHININESS"));
+  EXPECT_FALSE(named(stream(GL_POINTS, false), "GL_FRONT, GL_SHININESS"));
+  EXPECT_FALSE(named(stream(GL_LINE_STRIP, true), "GL_FRONT, GL_SHININESS"));
+}
+
 }  // namespace
 }  // namespace ffc::difftest
