@@ -401,11 +401,18 @@ const std::vector<KnownDeviation>& known_deviations() {
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kColorShrinkInPrimitive) !=
                             soft.deviations.end();
        }},
-      // Row 47: the call's own error, and what was not drawn.
+      // Row 47: the call's own error, and what was not drawn. Compiled into a list, the error is the
+      // glCallList's (seed 662607 stream 3910108319701054866, repro list_draw_pixels_format.txt):
+      // soft's GL_INVALID_OPERATION where Mesa's is none.
       {"soft-drawpixels-format-not-implemented", state::kDrawPixelsFormat,
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
+       [](const Stream& s, const Mismatch& m, const SideResult& mesa, const SideResult& soft) {
+         const auto call_is = [&](const char* f) { return m.call >= 0 && name_of(s[size_t(m.call)]) == f; };
+         const bool called = (call_is("glCallList") || call_is("glCallLists")) && size_t(m.call) < soft.errors.size() &&
+                             soft.errors[size_t(m.call)] == GL_INVALID_OPERATION &&
+                             mesa.errors[size_t(m.call)] == GL_NO_ERROR &&
+                             any_call(s, m.call, [](const Call& c, size_t) { return is(c, "glDrawPixels"); });
          const bool kind = m.kind == "pixels" || m.kind == "readpixels" ||
-                           (m.kind == "error" && m.call >= 0 && name_of(s[size_t(m.call)]) == "glDrawPixels");
+                           (m.kind == "error" && (call_is("glDrawPixels") || called));
          return kind && std::find(soft.deviations.begin(), soft.deviations.end(), state::kDrawPixelsFormat) !=
                             soft.deviations.end();
        }},
