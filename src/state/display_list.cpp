@@ -764,6 +764,12 @@ void Context::end_list_node() {
                                                                                      : lists_.attributes & 3,
                                             !lists_.node_draw && lists_.attributes != 0),
         lists_.node_open = false;
+  // A line loop ended last in the vertex list is closed with a copy of its first vertex
+  // (convert_line_loop_to_strip), a repeat the compiler then removes (kListLoopbackDeduplicated):
+  // measured, seed 161803 stream 2075 (repro list_loop_copy_deduplicated.txt), a GL_COMPILE list's
+  // glDrawArrays(GL_LINE_LOOP) of one vertex, a flush, then a wrap that marks the list for loopback
+  // leaves another current colour than the loop's vertex after glCallList.
+  if (lists_.closing_loop && lists_.vertices > 0) lists_.store_repeats = true;
   close_store();
   // The store and its format are emptied in GL_COMPILE too (GL_COMPILE_AND_EXECUTE's run_held_back
   // follows at the same call): a colour after the flush joins the format again.
