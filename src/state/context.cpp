@@ -25,7 +25,7 @@ Context::Context(int width, int height, Precision precision)
 Context::~Context() { early_join(); }
 
 GLenum Context::GetError() {
-  if (in_begin_) {  // Mesa: returns 0 and records INVALID_OPERATION
+  if (in_begin_ || exec_inside_) {  // Mesa: returns 0 and records INVALID_OPERATION
     error(GL_INVALID_OPERATION);
     return GL_NO_ERROR;
   }
@@ -67,6 +67,17 @@ bool Context::outside_begin_end_keeping_vertices() {
 bool Context::query_allowed() { return outside_begin_end_keeping_vertices(); }
 bool Context::outside_begin_end_or_compiling() { return (in_begin_ && lists_.mode != 0) || outside_begin_end(); }
 
+// The calls whose Mesa entry point tests CurrentExecPrimitive itself (ASSERT_OUTSIDE_BEGIN_END), so
+// that they are refused where a list's vertex list left it set without Mesa's glBegin/glEnd dispatch
+// (exec_inside_, Context::node_ends), where every other call is taken. Measured after such a list:
+// glNewList (GL_LIST_INDEX stays 0), glGenLists (returns 0), glIsList (returns GL_FALSE) refused;
+// glPushMatrix, glPushAttrib, glMatrixMode, glEnable, glLineWidth and glGet* taken (repro
+// list_draw_last_leaves_exec_inside.txt). glGetError, glIsEnabled, glGetString and glBegin test it too.
+bool Context::outside_exec_primitive() {
+  if (exec_inside_) return error(GL_INVALID_OPERATION), false;
+  return outside_begin_end();
+}
+
 pool::Workers& Context::workers() {
   if (!workers_) workers_ = std::make_unique<pool::Workers>(threads_);
   return *workers_;
@@ -78,7 +89,7 @@ void Context::Finish() { outside_begin_end(); }
 void Context::Flush() { outside_begin_end(); }
 
 const GLubyte* Context::GetString(GLenum name) {
-  if (in_begin_) return error(GL_INVALID_OPERATION), nullptr;  // while a list compiles too, as glIsEnabled
+  if (in_begin_ || exec_inside_) return error(GL_INVALID_OPERATION), nullptr;  // while a list compiles too, as glIsEnabled
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>("ffcompat");
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>("ffcompat soft (fixed-function)");

@@ -293,7 +293,6 @@ class Context {
   void store_vertex(int kind, const glm::dvec4& v);  // a value entering the list's store: a vertex (-1), a normal (1), a colour (2)
   void close_store();               // the store is compiled into a vertex list: its repeats counted
   void stray_end();                 // run from a list: the glEnd of a draw joined to a restarted primitive
-  void forget_inside();  // run from a list: Context::node_ends reopens nothing
   void drop_open_primitive(bool keep_open, int drop);  // run from a list: a compiled draw inside the list's own glBegin
   void call_list_offset(GLuint offset);  // a compiled glCallLists name: the list base read now
 
@@ -337,6 +336,7 @@ class Context {
   bool outside_begin_end();
   bool query_allowed();  // a query's check (outside_begin_end_keeping_vertices)
   bool outside_begin_end_or_compiling();  // outside_begin_end, but taken while a list compiles
+  bool outside_exec_primitive();  // outside_begin_end, and refused where a list left Mesa inside (exec_inside_)
   bool outside_begin_end_keeping_vertices();  // records INVALID_OPERATION inside glBegin/glEnd, flushes nothing  // records INVALID_OPERATION inside glBegin/glEnd
   void set_enabled(GLenum cap, bool on);
   void set_client_state(GLenum array, bool on);
@@ -579,6 +579,12 @@ class Context {
   // The primitive being assembled
   GLenum prim_mode_ = 0;
   bool in_begin_ = false;
+  // Mesa's CurrentExecPrimitive left set by a list's vertex list without its glBegin/glEnd dispatch
+  // (display_list.cpp, Context::node_ends): soft is outside glBegin/glEnd, and only the calls that
+  // test CurrentExecPrimitive themselves see a primitive (outside_exec_primitive); glEnd ends it.
+  bool exec_inside_ = false;
+  // A list's vertex list whose glBegin that refused: Mesa skips it whole (Context::Begin, node_ends).
+  bool refused_node_ = false;
   std::vector<raster::Vertex> verts_;
   // The batch process_vertex keeps: the last pending_slot_.size() entries of verts_ wait for
   // their colours; slot k takes pending_in_[pending_slot_[k]] (identical consecutive vertices

@@ -55,9 +55,6 @@ void list_stray_end() {
 void list_node_split(bool draw, int copy, int joining) {
   if (Context* c = Context::current()) c->node_splits(draw, copy, joining);
 }
-void list_forget_inside() {
-  if (Context* c = Context::current()) c->forget_inside();
-}
 void list_drop_open_primitive(bool keep_open, int drop) {
   if (Context* c = Context::current()) c->drop_open_primitive(keep_open, drop);
 }
@@ -280,6 +277,11 @@ void Context::run_held_back(bool new_format) {
   lists_.held_back.replay();
   --lists_.depth;
   lists_.held_back.clear();
+  // Their glEnd ended the wrapped primitive on the executing side, so glGet reads the current values
+  // again (ListState::shown), a flush that keeps the format too: measured (seed 577215 stream
+  // 15458122814594184789, repro list_store_fill_ends_shown.txt), a GL_POINTS wrapped by its first
+  // glNormal, ended, then a glDrawArrays too large for the store reads back the normal sent.
+  if (!in_begin_) lists_.shown = false;
   if (closing_loop && empty_loop) deviations_.insert(kListEmptyLoopCurrent);
   else if (closing_loop && (format & 1)) normal_ = lists_.loop_first_normal;
   if (closing_loop && !empty_loop && (format & 2)) color_ = lists_.loop_first_color;
@@ -367,7 +369,7 @@ DisplayList* Context::list_recording() {
 }
 
 GLuint Context::GenLists(GLsizei range) {
-  if (!outside_begin_end()) return 0;
+  if (!outside_exec_primitive()) return 0;
   if (range < 0) return error(GL_INVALID_VALUE), 0;
   if (range == 0) return 0;
   // Mesa's hash table gives out the name after the largest it ever held (names deleted below it are
@@ -386,7 +388,7 @@ void Context::DeleteLists(GLuint list, GLsizei range) {
 }
 
 GLboolean Context::IsList(GLuint list) {
-  if (!outside_begin_end()) return GL_FALSE;
+  if (!outside_exec_primitive()) return GL_FALSE;
   return list != 0 && lists_.lists.count(list) ? GL_TRUE : GL_FALSE;
 }
 
@@ -394,7 +396,7 @@ void Context::NewList(GLuint list, GLenum mode) {
   // While a list compiles, Mesa's compiling dispatch refuses glNewList before it looks at the
   // arguments (measured: glNewList(0, GL_CURRENT_NORMAL) then is GL_INVALID_OPERATION).
   if (lists_.mode != 0) return error(GL_INVALID_OPERATION);
-  if (!outside_begin_end()) return;
+  if (!outside_exec_primitive()) return;
   // Mesa's glNewList copies the pending current values (FLUSH_CURRENT), a glMaterial's and a colour
   // tracked by colour material included: measured, a GL_COMPILE_AND_EXECUTE list's wrap then shows
   // them (mesa_color_, mesa_materials_; repro list_new_list_copies_current.txt). Before the
@@ -486,6 +488,7 @@ void Context::call_one_list(GLuint list) {
   ++lists_.depth, lists_.replaying_loopback = it->second.loopback;
   it->second.replay();
   --lists_.depth, lists_.replaying_loopback = outer;
+  if (lists_.depth == 0) refused_node_ = false;
 }
 
 namespace {
@@ -587,10 +590,6 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   // primitive and its glEnd ends it.
   const bool ends_open = lists_.open && !lists_.compiling_draw;
   const bool executing = &l == &lists_.held_back;
-  // A vertex sent after the wrap, before the draw: Mesa leaves its primitive as the vertex lists
-  // before left it no longer (measured: glColor3f, glVertex, glColor4f (the wrap), glVertex, then a
-  // draw of one: outside after glCallList; the rule not traced in the source): Context::node_ends.
-  if (&l == &lists_.compiling && ends_open && lists_.wrapped && lists_.vertices > 0) l.record<list_forget_inside>();
   // The vertices dropped: those sent since the primitive's glBegin or its last wrap (a wrap's first
   // vertex list drew those before it).
   if (ends_open) l.record<list_drop_open_primitive>(executing, lists_.vertices);
@@ -599,7 +598,11 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (ends_open && count == 0 && forms_format(l)) lists_.open = false, lists_.closing_loop = false;
   // A draw of no vertex is a primitive of Mesa's store too (save_DrawArrays begins it): its vertex
   // list's FLUSH_FOR_DRAW flushes the values pending when the list runs (Context::flush_pending).
-  if (count == 0 && &l == &lists_.compiling && !lists_.open) start_list_node(true);
+  // Inside the list's glBegin in GL_COMPILE_AND_EXECUTE too, where the list's primitive is ended only
+  // with the held-back calls, after this (seed 577215 stream 9400455120439465367: the vertex list
+  // was taken for one that copies, so glCallList left soft outside; repro
+  // list_draw_last_leaves_exec_inside.txt).
+  if (count == 0 && &l == &lists_.compiling && (!lists_.open || ends_open)) start_list_node(true);
   if (count == 0) return;
   // Mesa compiles the draw as glBegin, glArrayElement for each element and glEnd into its vertex
   // store, so the elements grow the list's vertex format as calls do (hold_back).
@@ -793,6 +796,12 @@ void Context::end_list_node() {
                                                                                      : lists_.attributes & 3,
                                             !lists_.node_draw && lists_.attributes != 0),
         lists_.node_open = false;
+  // A line loop ended last in the vertex list is closed with a copy of its first vertex
+  // (convert_line_loop_to_strip), a repeat the compiler then removes (kListLoopbackDeduplicated):
+  // measured, seed 161803 stream 2075 (repro list_loop_copy_deduplicated.txt), a GL_COMPILE list's
+  // glDrawArrays(GL_LINE_LOOP) of one vertex, a flush, then a wrap that marks the list for loopback
+  // leaves another current colour than the loop's vertex after glCallList.
+  if (lists_.closing_loop && lists_.vertices > 0) lists_.store_repeats = true;
   close_store();
   // The store and its format are emptied in GL_COMPILE too (GL_COMPILE_AND_EXECUTE's run_held_back
   // follows at the same call): a colour after the flush joins the format again.
@@ -853,7 +862,7 @@ void Context::split_list_node(int joining) {
 void Context::node_begins() {
   flush_pending(true);
   node_values_ = current_values();
-  lists_.node_inside = in_begin_, lists_.node_inside_mode = prim_mode_;
+  lists_.node_inside = in_begin_ || exec_inside_;
 }
 
 // A vertex list whose last primitive begun is a compiled draw copies nothing to the current values
@@ -863,21 +872,29 @@ void Context::node_begins() {
 // compiled after the draw raises nothing. Measured (seed 271828 stream 1376, repro
 // list_draw_inside_begin_wrapped.txt): glBegin(GL_POINTS), glColor3f, glVertex, glColor4f (the wrap),
 // then glDrawArrays of none or four (or glEnd, then the draw), then glEnd: no error, the point drawn;
-// without the wrap the last glEnd is GL_INVALID_OPERATION. Soft opens the primitive again, empty.
+// without the wrap the last glEnd is GL_INVALID_OPERATION. Only CurrentExecPrimitive is set, not
+// Mesa's glBegin/glEnd dispatch (playback_copy_to_current switches none), so soft stays outside and
+// notes it (exec_inside_): the calls that test CurrentExecPrimitive themselves are refused, glEnd
+// ends it, every other call is taken. Measured (seed 577215 stream 9400455120439465367, repro
+// list_draw_last_leaves_exec_inside.txt): with a vertex after the wrap too (soft took that for
+// outside, from a glGet answered), glPushMatrix is taken, glIsEnabled and glNewList refused, and a
+// glEnd compiled after the draw raises nothing.
 void Context::node_ends(bool draw, int loop, bool copy) {
+  if (refused_node_) {  // skipped whole, its current values too (Context::Begin)
+    refused_node_ = false;
+    return restore(node_values_);
+  }
   if (lists_.replaying_loopback) {
     if (loop & 8) deviations_.insert(kListEmptyLoopCurrent);
     if (loop & 1) normal_ = lists_.loop_first_normal;
     if (loop & 2) color_ = lists_.loop_first_color;
   } else if (draw) {
     restore(node_values_);
-    if (lists_.node_inside && !in_begin_) Begin(lists_.node_inside_mode);
+    if (lists_.node_inside && !in_begin_) exec_inside_ = true;
   } else if (copy) {
-    lists_.mesa_inside = false;  // its last primitive ended in it
+    lists_.mesa_inside = exec_inside_ = false;  // its last primitive ended in it
   }
 }
-
-void Context::forget_inside() { lists_.node_inside = false; }
 
 void Context::node_splits(bool draw, int copy, int joining) {
   const bool last = joining & 4, current = joining & 8;
@@ -889,7 +906,7 @@ void Context::node_splits(bool draw, int copy, int joining) {
   // this vertex list's last vertex's, not the wrapping attribute's (measured: glColor3f, glVertex,
   // glColor4f(0, 0, 0, 0) (the wrap), a compiled draw: GL_CURRENT_COLOR alpha 1 after glCallList;
   // repro list_draw_inside_begin_wrapped.txt).
-  node_values_ = current_values(), lists_.node_inside = in_begin_ && current, lists_.node_inside_mode = prim_mode_;
+  node_values_ = current_values(), lists_.node_inside = in_begin_ && current;
   if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
   if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
 }

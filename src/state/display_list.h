@@ -244,10 +244,9 @@ struct ListState {
   // The modes of the open vertex list's primitives with a vertex, in order (Context::note_node_mode,
   // close_node_modes).
   std::vector<GLenum> node_modes;
-  // Replaying: whether Mesa's immediate mode was inside a primitive (and its mode) when the vertex
-  // list began, as the vertex lists before it left it (Context::node_ends).
+  // Replaying: whether Mesa's immediate mode was inside a primitive when the vertex list began, as the
+  // vertex lists before it left it (Context::node_ends).
   bool node_inside = false;
-  GLenum node_inside_mode = 0;
   // Compiling: the vertices of the store since it was last compiled, as Mesa's compiler compares them
   // (the bits of the position, normal and colour as floats), whether one repeats, and whether a vertex
   // list with a repeat was compiled before the list was marked for loopback (kListLoopbackDeduplicated).

@@ -107,7 +107,7 @@ int Context::enabled_state(GLenum cap) {
 }
 
 GLboolean Context::IsEnabled(GLenum cap) {
-  if (in_begin_) return error(GL_INVALID_OPERATION), GL_FALSE;  // checked while a list compiles too (measured)
+  if (in_begin_ || exec_inside_) return error(GL_INVALID_OPERATION), GL_FALSE;  // checked while a list compiles too (measured)
   const int on = enabled_state(cap);
   if (on < 0) return error(GL_INVALID_ENUM), GL_FALSE;
   return GLboolean(on);

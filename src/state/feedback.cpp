@@ -96,7 +96,7 @@ void Context::FeedbackBuffer(GLsizei size, GLenum type, GLfloat* buffer) {
 }
 
 GLint Context::RenderMode(GLenum mode) {
-  if (!outside_begin_end()) return 0;
+  if (!outside_exec_primitive()) return 0;
   if (mode != GL_RENDER && mode != GL_FEEDBACK && mode != GL_SELECT) return error(GL_INVALID_ENUM), 0;
   // Feedback needs a buffer of non-zero size; selection a glSelectBuffer of non-zero size. Mesa
   // records GL_INVALID_OPERATION and then switches the mode all the same; ours stays in its mode,

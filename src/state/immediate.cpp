@@ -186,6 +186,17 @@ void Context::stray_vertex() {
 
 void Context::Begin(GLenum mode) {
   if (in_begin_) return error(GL_INVALID_OPERATION);
+  // Where a list left Mesa's CurrentExecPrimitive set, a list's vertex list that begins a primitive
+  // is refused whole (vbo_save_playback_vertex_list: "draw operation inside glBegin/End"): its glEnd
+  // with it, and it copies nothing to the current values, so Mesa stays inside (Context::node_ends).
+  // One replayed through immediate mode meets vbo_exec_Begin's refusal and its glEnd ends the
+  // primitive. Measured (seed 577215 stream 9400455120439465367, repro
+  // list_draw_last_leaves_exec_inside.txt): glBegin(GL_POINTS), glColor3fv, glEnd after such a draw
+  // and a state call in the same list leaves Mesa inside, its glCallList raising nothing to see.
+  if (exec_inside_) {
+    refused_node_ |= lists_.depth > 0 && !lists_.replaying_loopback;
+    return error(GL_INVALID_OPERATION);
+  }
   validate_matrices();  // Mesa validates its state before it checks the mode
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   // Mesa's glBegin asks for no flush: its glEnd does when the primitive left vertices stored
@@ -342,6 +353,10 @@ void Context::leave_triangle_list() {
 // two vertices, glColor3f(0, 0, 0), glEnd, glColorMaterial(GL_FRONT_AND_BACK, GL_EMISSION) leaves
 // the ambient 1 on Mesa; soft read 0 before; repro trailing_color_after_wrap.txt).
 void Context::End() {
+  // Where a list left Mesa's CurrentExecPrimitive set (exec_inside_), its glEnd ends that primitive,
+  // which holds no vertex: no error, nothing drawn.
+  if (!in_begin_ && refused_node_) return;
+  if (!in_begin_ && exec_inside_) return void(exec_inside_ = false);
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = store_corners_ = false;
   if (!immediate_list_) early_join();  // (none in flight: leave_triangle_list joined it) else immediate_to_list

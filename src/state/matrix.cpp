@@ -3,9 +3,8 @@
 // float (float_matrix.h); the context's precision says which one draws.
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "state/context.h"
 #include "state/gl_rules.h"
@@ -82,12 +81,20 @@ void Context::PushMatrix() {
   f.push_back(f.back());
 }
 
+// Mesa 22.3 flushes (FLUSH_VERTICES) only where the matrix popped differs from the current one: an
+// underflow or a pop to an equal matrix leaves the values a vertex list copied to its immediate-mode
+// vbo unflushed, so a GL_COMPILE_AND_EXECUTE list's wrapped glBegin after it shows the current values
+// from before them. Measured (seed 161803 stream 2503, repro list_pop_matrix_no_flush.txt): a
+// GL_TRIANGLES with glNormal3f(.5, 0, 0), glPopMatrix, then a GL_TRIANGLES wrapped by its glNormal
+// reads (0, 0, 1) there after an underflow or an equal matrix, (.5, 0, 0) after a different one.
 void Context::PopMatrix() {
-  if (!outside_begin_end()) return;
+  if (in_begin_) return error(GL_INVALID_OPERATION);
   auto& s = stack();
   if (s.size() <= 1) return error(GL_STACK_UNDERFLOW);
+  auto& f = stack_f();
+  if (std::memcmp(&f[f.size() - 2].values(), &f.back().values(), sizeof(glm::mat4)) != 0) flush_vertices();
   s.pop_back();
-  stack_f().pop_back();
+  f.pop_back();
 }
 
 // Each transform updates the double matrix exactly and the float one as Mesa's float maths does.

@@ -182,6 +182,12 @@ void Context::RasterPos(double x, double y, double z, double w) {
 
 void Context::set_raster_pos(double x, double y, double z, double w) {
   flush_stored();  // Mesa: FLUSH_VERTICES and FLUSH_CURRENT first, then the state validated
+  // The FLUSH_CURRENT copies a value a list left pending as a vertex list's first flush does, so the
+  // next vertex list's forgets it (Context::flush_current). Measured (seed 577215 stream
+  // 9649509103857847282, repro list_raster_pos_flushes_pending.txt): a list's glArrayElement of a
+  // normal array outside glBegin, glRasterPos2f, then a GL_QUADS with glNormal3fv(0, 0, 0) reads back
+  // the quad's normal.
+  flush_current();
   validate_matrices();
   if (precision_ == Precision::Double || spec_) return raster_pos_spec(x, y, z, w);
   // Mesa (rastpos.c): in float, the modelview and then the projection, one after the other.

@@ -13,6 +13,7 @@
 #include "difftest/runner.h"
 #include "difftest/shrink.h"
 #include "difftest/stream.h"
+#include "state/display_list.h"
 
 namespace ffc::difftest {
 namespace {
@@ -208,6 +209,108 @@ TEST(Known, NullArrayCrashIsNamedOnlyWhereAnArrayHadNoPointer) {
   Stream none = {s[0], s[1], make_call("glDrawArrays", {n(GL_TRIANGLE_STRIP), n(0), n(0)}), make_call("glFinish", {})};
   named = explain(none, crash, mesa, soft);
   EXPECT_TRUE(named == nullptr || named->name != "soft-null-array-pointer-crash");
+}
+
+TEST(Known, NegativeStrideHiddenInsideExecutingBegin) {
+  // Seed 577215 stream 11801004284260778288: the glVertexPointer runs while GL_COMPILE_AND_EXECUTE's
+  // executing side is inside the list's wrapped glBegin, where glGetError returns no error on either
+  // side; Mesa sets the array all the same, and the table must still name it.
+  const Stream s = {make_call("glNewList", {n(1), n(GL_COMPILE_AND_EXECUTE)}), make_call("glBegin", {n(GL_QUAD_STRIP)}),
+                    make_call("glVertex3f", {n(0), n(0), n(0)}), make_call("glColor3fv", {Arg::values(GL_FLOAT, {0, 0, 0})}),
+                    make_call("glVertexPointer", {n(2), n(GL_SHORT), n(-1), Arg::values(GL_SHORT, {0, 0, 1, 1})}),
+                    make_call("checkpoint", {})};
+  const Checked c = check(s, {});
+  EXPECT_TRUE(c.unexplained.empty()) << (c.unexplained.empty() ? "" : c.unexplained[0].key);
+  ASSERT_FALSE(c.explained.empty());
+  for (const auto& [m, name] : c.explained) EXPECT_EQ(name, "mesa-negative-stride-applied") << m.key;
+  // Not a pointer call soft refused for another reason with Mesa showing nothing (soft's own error
+  // shows), nor one with a stride that is not negative.
+  const Mismatch size{"state", "state glGetIntegerv(GL_VERTEX_ARRAY_SIZE)", 5, ""};
+  SideResult refused = c.soft;
+  refused.errors[4] = GL_INVALID_OPERATION;
+  EXPECT_EQ(explain(s, size, c.mesa, refused), nullptr);
+  Stream positive = s;
+  positive[4].args[2] = n(4);
+  EXPECT_EQ(explain(positive, size, c.mesa, c.soft), nullptr);
+}
+
+TEST(Known, ListMaterialfColourIsNamedAlone) {
+  // Mesa's garbage differs from run to run, so the recogniser is asked directly: the compiled
+  // glMaterialf(GL_FRONT, GL_AMBIENT_AND_DIFFUSE) explains GL_FRONT's ambient and diffuse read back
+  // after the list; not GL_BACK's, not its specular, not the same call outside a list, not a
+  // compiled glMaterialf(GL_SHININESS) (both sides agree on it).
+  const auto stream = [](bool listed, GLenum pname) {
+    Stream s;
+    if (listed) s.push_back(make_call("glNewList", {n(4), n(GL_COMPILE)}));
+    s.push_back(make_call("glMaterialf", {n(GL_FRONT), n(pname), n(76)}));
+    if (listed) s.push_back(make_call("glEndList", {})), s.push_back(make_call("glCallList", {n(4)}));
+    s.push_back(make_call("checkpoint", {}));
+    return s;
+  };
+  const auto read = [](const Stream& s, const char* what) {
+    return Mismatch{"state", std::string("state glGetMaterialfv(") + what + ")", int(s.size()) - 1, ""};
+  };
+  SideResult ok;
+  ok.errors.assign(8, GL_NO_ERROR);
+  const auto named = [&](const Stream& s, const Mismatch& m) {
+    const KnownDeviation* d = explain(s, m, ok, ok);
+    return d && d->name == "mesa-list-materialf-colour-unwritten";
+  };
+  const Stream listed = stream(true, GL_AMBIENT_AND_DIFFUSE);
+  EXPECT_TRUE(named(listed, read(listed, "GL_FRONT, GL_AMBIENT")));
+  EXPECT_TRUE(named(listed, read(listed, "GL_FRONT, GL_DIFFUSE")));
+  EXPECT_TRUE(named(listed, Mismatch{"pixels", "pixels", int(listed.size()) - 1, ""}));
+  EXPECT_FALSE(named(listed, read(listed, "GL_BACK, GL_AMBIENT")));
+  EXPECT_FALSE(named(listed, read(listed, "GL_FRONT, GL_SPECULAR")));
+  const Stream outside = stream(false, GL_AMBIENT_AND_DIFFUSE);
+  EXPECT_FALSE(named(outside, read(outside, "GL_FRONT, GL_AMBIENT")));
+  const Stream shininess = stream(true, GL_SHININESS);
+  EXPECT_FALSE(named(shininess, read(shininess, "GL_FRONT, GL_SHININESS")));
+}
+
+TEST(Known, CurrentValuesReadByTheStreamsGet) {
+  // Row 65's current colour read by the stream's own glGetFloatv (an output, seed 577215 stream
+  // 5988082728378332109) is named as at a checkpoint; another value read so is not, nor the colour
+  // where soft's model met no wrapped line loop.
+  const Stream s = {make_call("glGetFloatv", {n(GL_CURRENT_COLOR), Arg::out(16)}), make_call("checkpoint", {})};
+  SideResult mesa, soft;
+  mesa.errors.assign(2, GL_NO_ERROR), soft.errors = mesa.errors;
+  soft.deviations = {state::kListLineLoopCurrent};
+  const Mismatch colour{"output", "output glGetFloatv(GL_CURRENT_COLOR)", 0, ""};
+  const KnownDeviation* d = explain(s, colour, mesa, soft);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->name, "mesa-list-line-loop-wrap-current");
+  EXPECT_EQ(explain(s, Mismatch{"output", "output glGetFloatv(GL_MODELVIEW_MATRIX)", 0, ""}, mesa, soft), nullptr);
+  soft.deviations.clear();
+  EXPECT_EQ(explain(s, colour, mesa, soft), nullptr);
+}
+
+TEST(Known, MaterialAfterLastPointIsNamedAlone) {
+  // Seed 161803 stream 2269: a glMaterialf after the last vertex of a list's GL_POINTS leaves a vertex
+  // list with the material and no vertex (row 55); the shininess read back after glCallList is named.
+  // Not where the material comes before the vertex, nor after the last vertex of a GL_LINE_STRIP
+  // (its wrap copies the vertex).
+  const auto stream = [](GLenum mode, bool after) {
+    Stream s = {make_call("glNewList", {n(5), n(GL_COMPILE)}), make_call("glBegin", {n(mode)})};
+    const Call material = make_call("glMaterialf", {n(GL_FRONT), n(GL_SHININESS), n(1)});
+    if (!after) s.push_back(material);
+    s.push_back(make_call("glVertex3f", {n(0), n(0), n(0)}));
+    if (after) s.push_back(material);
+    for (const char* f : {"glEnd", "glEndList"}) s.push_back(make_call(f, {}));
+    s.push_back(make_call("glCallList", {n(5)}));
+    s.push_back(make_call("checkpoint", {}));
+    return s;
+  };
+  SideResult ok;
+  ok.errors.assign(8, GL_NO_ERROR);
+  const auto named = [&](const Stream& s, const char* what) {
+    const Mismatch m{"state", std::string("state glGetMaterialfv(") + what + ")", int(s.size()) - 1, ""};
+    const KnownDeviation* d = explain(s, m, ok, ok);
+    return d && d->name == "mesa-list-primitive-without-vertex";
+  };
+  EXPECT_TRUE(named(stream(GL_POINTS, true), "GL_FRONT, GL_SHININESS"));
+  EXPECT_FALSE(named(stream(GL_POINTS, false), "GL_FRONT, GL_SHININESS"));
+  EXPECT_FALSE(named(stream(GL_LINE_STRIP, true), "GL_FRONT, GL_SHININESS"));
 }
 
 }  // namespace
