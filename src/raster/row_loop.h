@@ -168,28 +168,38 @@ inline ColumnTerms column_terms(const Triangle& t, int px) {
 // reaching further make their own (covers). The storage is the caller's (its stack: a heap
 // buffer would be allocated during some frame).
 inline constexpr int kCachedColumns = 1024;
+
+// The columns a cache has made, lo..hi (none at first), grown to cover from..to by making only the
+// columns missing (make(a, b) makes a..b). Shared by the row loop's cache and the kernels'.
+struct MadeColumns {
+  int lo = 0, hi = -1;
+  template <class Make>
+  void cover(int from, int to, Make&& make) {
+    if (lo > hi) {
+      make(from, to), lo = from, hi = to;
+      return;
+    }
+    if (from < lo) make(from, lo - 1), lo = from;
+    if (to > hi) make(hi + 1, to), hi = to;
+  }
+};
+
 class ColumnCache {
  public:
   ColumnCache(const Triangle& t, ColumnTerms* store) : t_(t), store_(store) {}
   bool covers(int to) const { return to - t_.xmin < kCachedColumns; }
   // Columns from..to (within the triangle's box, covers(to)), made where they are not yet.
   const ColumnTerms* at(int from, int to) {
-    if (lo_ > hi_) {
-      make(from, to), lo_ = from, hi_ = to;
-    } else {
-      if (from < lo_) make(from, lo_ - 1), lo_ = from;
-      if (to > hi_) make(hi_ + 1, to), hi_ = to;
-    }
+    made_.cover(from, to, [&](int a, int b) {
+      for (int px = a; px <= b; ++px) store_[px - t_.xmin] = column_terms(t_, px);
+    });
     return store_ + (from - t_.xmin);
   }
 
  private:
-  void make(int from, int to) {
-    for (int px = from; px <= to; ++px) store_[px - t_.xmin] = column_terms(t_, px);
-  }
   const Triangle& t_;
   ColumnTerms* store_;
-  int lo_ = 0, hi_ = -1;
+  MadeColumns made_;
 };
 
 // Pixels lo..hi of row py, covered by t (planes filled), drawn one by one: depth test, colour.

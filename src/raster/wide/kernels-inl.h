@@ -238,19 +238,14 @@ struct ColumnCache {
   // last vector made for it writes up to a vector past that.
   static constexpr size_t kPitch = kCachedColumns + 2 * kMaxLanes32;
   float* store;  // 6 * kPitch floats
-  int xmin, lo = 0, hi = -1;  // columns lo..hi are made
+  int xmin;
+  MadeColumns made;
   HWY_INLINE ColumnCache(float* storage, int xmin_) : store(storage), xmin(xmin_) {}
   HWY_INLINE bool Covers(int to) const { return to - xmin < kCachedColumns; }
   // Makes the columns from..to (within the triangle's, Covers(to)) that are not made yet, a vector
   // at a time; returns where column `from`'s values lie.
   HWY_INLINE const float* At(DF df, const Planes<DF>& p, int from, int to) {
-    if (lo > hi) {
-      Make(df, p, from, to);
-      lo = from, hi = to;
-    } else {
-      if (from < lo) Make(df, p, from, lo - 1), lo = from;
-      if (to > hi) Make(df, p, hi + 1, to), hi = to;
-    }
+    made.cover(from, to, [&](int a, int b) { Make(df, p, a, b); });
     return store + (from - xmin);
   }
   HWY_INLINE void Make(DF df, const Planes<DF>& p, int from, int to) {
