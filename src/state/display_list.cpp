@@ -850,11 +850,17 @@ void Context::split_list_node(int joining) {
   // Bit 4: the wrapping attribute came after the open primitive's last vertex, whose values
   // (list_snapshot_last_vertex) the vertex list before the wrap hands the current values.
   const int last = joining && lists_.had_vertex && (lists_.trailing & joining) == joining ? 4 : 0;
+  // Bits 16 and 32: a normal or colour already in the format and sent after the open primitive's last
+  // vertex waits in Mesa's vertex template, not in the vertex list before the wrap, which hands the
+  // current values its last vertex's (measured, seed 299792 stream 6292637399379987596: glBegin,
+  // glNormal, glVertex, glNormal, then a first glColor wrapping and a compiled draw of none leave the
+  // first normal after glCallList; repro list_trailing_before_wrap_draw.txt).
+  const int stale = lists_.had_vertex ? (lists_.trailing & lists_.attributes & 3 & ~joining) << 4 : 0;
   // Bit 8: the vertex list before the wrap holds an attribute besides the position, so it has current
   // values to copy, and its copy (playback_copy_to_current) sets Mesa's CurrentExecPrimitive; one of
   // positions alone returns before it (Context::node_ends).
   const int current = lists_.attributes != 0 ? 8 : 0;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current);
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | stale);
   note_vertexless_node();
   close_store();
 }
@@ -898,6 +904,7 @@ void Context::node_ends(bool draw, int loop, bool copy) {
 
 void Context::node_splits(bool draw, int copy, int joining) {
   const bool last = joining & 4, current = joining & 8;
+  const int stale = (joining >> 4) & 3;
   joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
@@ -909,6 +916,8 @@ void Context::node_splits(bool draw, int copy, int joining) {
   node_values_ = current_values(), lists_.node_inside = in_begin_ && current;
   if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
   if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
+  if (stale & 1) node_values_.normal = lists_.last_vertex_normal;
+  if (stale & 2) node_values_.color = lists_.last_vertex_color;
 }
 
 // Mesa's flushes of the values a list left pending (the rule of the unmerged reading of vbo_save,
