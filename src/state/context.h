@@ -259,6 +259,7 @@ class Context {
   void mark_called_loopback(const DisplayList& l);  // ... and so are the lists it calls, for good
   void note_loop_first_vertex(DisplayList& l);  // after a compiled vertex: a line loop's first keeps its values
   void loop_first_vertex();  // run from the held-back calls: a line loop's first vertex's values
+  void copied_vertex_values(int kind, const glm::dvec4& v);  // a wrap's copies take the compiler's value
   void snapshot_last_vertex();  // run from a list: the normal and colour its last vertex took
   void drop_trailing(int kind);  // run from a list after its glEnd: those values back
   void list_vertex_compiled(DisplayList& l, int own, bool last);  // a vertex compiles in a primitive of the list: it carries the trailing values

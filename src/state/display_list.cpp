@@ -102,6 +102,9 @@ void list_loopback_attributes(int kinds, int kind, bool first_format) {
 void list_loop_first_vertex() {
   if (Context* c = Context::current()) c->loop_first_vertex();
 }
+void list_copied_vertex_values(int kind, double x, double y, double z, double w) {
+  if (Context* c = Context::current()) c->copied_vertex_values(kind, glm::dvec4(x, y, z, w));
+}
 }  // namespace
 
 // Measured against Mesa (repro list_wrap_replaces_pending.txt): a list holding glColor4f(0, 0, 0,
@@ -159,6 +162,19 @@ void Context::drop_trailing(int kind) {
 void Context::list_vertex_compiled(DisplayList& l, int own, bool last) {
   if (const int carry = lists_.carry & ~own) l.record<list_carry_trailing>(carry);
   if (last) lists_.carry = 0;
+}
+
+// Measured (seed 299792 stream 5236854486341871494 shrunk, repro list_wrap_copies_take_list_current.txt):
+// where an attribute first joins the format while the open primitive's last vertices are copied into
+// the next vertex list (upgrade_vertex), and the list compiled that attribute outside its glBegin
+// before (so the compiler knows a value: no loopback), the copies take the compiler's own current
+// value (ListState.CurrentAttrib): the last value of that attribute the list sent, outside glBegin or
+// in a format since flushed (a compiled draw's last element). A GL_QUAD_STRIP of one vertex after a
+// draw with a normal array, glNormal after the vertex, glEnd: the current normal after glCallList is
+// the draw's last element's. Soft takes that value for the last vertex's, which glEnd puts back.
+void Context::copied_vertex_values(int kind, const glm::dvec4& v) {
+  if (kind == 1) lists_.last_vertex_normal = glm::dvec3(v);
+  if (kind == 2) lists_.last_vertex_color = v;
 }
 
 void Context::carry_trailing(int kind) {
@@ -338,6 +354,11 @@ void Context::hold_back(int kind, int size) {
     if (lists_.open && lists_.open_mode == GL_LINE_LOOP) lists_.loop_restarted = true;
     split_list_node(kind > 0 ? kind & 3 : 0);  // the vertex list before the wrap is compiled first, then marked
     if (copies > 0 && kind > 0 && !(lists_.outside_attributes & kind)) mark_loopback();
+    else if (copies > 0 && (kind == 1 || kind == 2) && !(lists_.attributes & kind) && lists_.had_vertex) {
+      const glm::dvec4 v = kind == 1 ? glm::dvec4(lists_.store_normal, 0) : lists_.store_color;
+      lists_.compiling.record<list_copied_vertex_values>(kind, v.x, v.y, v.z, v.w);
+      if (list_executes()) lists_.held_back.record<list_copied_vertex_values>(kind, v.x, v.y, v.z, v.w);
+    }
     if (list_executes()) run_held_back(false);
     lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies, lists_.node_vertices = copies;
   }
