@@ -102,6 +102,9 @@ void list_loopback_attributes(int kinds, int kind, bool first_format) {
 void list_loop_first_vertex() {
   if (Context* c = Context::current()) c->loop_first_vertex();
 }
+void list_value_before_joining() {
+  if (Context* c = Context::current()) c->value_before_joining();
+}
 void list_copied_vertex_values(int kind, double x, double y, double z, double w) {
   if (Context* c = Context::current()) c->copied_vertex_values(kind, glm::dvec4(x, y, z, w));
 }
@@ -136,6 +139,21 @@ void Context::list_trailing(DisplayList& l, int kind) {
     if (list_executes()) lists_.held_back.record<list_snapshot_last_vertex>();
   }
   lists_.trailing |= kind;
+}
+
+// Measured (seed 299792 stream 14943971295263385005 shrunk, repro list_join_before_vertex_draw.txt): a
+// compiled draw, then glBegin(GL_POLYGON) and a first glNormal before any vertex of it (a wrap of the
+// draw's vertices), then a compiled draw inside that glBegin: after glCallList the normal is the one
+// from before the list. The glNormal waits in the next vertex list's format, and that vertex list's
+// last primitive is a draw, so it copies nothing; soft took the normal as current at the wrap
+// (Context::node_splits, bit 64).
+void Context::list_before_joining(DisplayList& l, int kind) {
+  if (lists_.open && !lists_.had_vertex && !(lists_.attributes & kind) && lists_.stored > 0 && &l == &lists_.compiling)
+    l.record<list_value_before_joining>();
+}
+
+void Context::value_before_joining() {
+  lists_.before_join_normal = normal_, lists_.before_join_color = color_;
 }
 
 void Context::list_primitive_end(DisplayList& l, int trailing) {
@@ -877,11 +895,13 @@ void Context::split_list_node(int joining) {
   // glNormal, glVertex, glNormal, then a first glColor wrapping and a compiled draw of none leave the
   // first normal after glCallList; repro list_trailing_before_wrap_draw.txt).
   const int stale = lists_.had_vertex ? (lists_.trailing & lists_.attributes & 3 & ~joining) << 4 : 0;
+  // Bit 64: the wrapping attribute came before any vertex of the open primitive (list_before_joining).
+  const int before = joining && lists_.open && !lists_.had_vertex ? 64 : 0;
   // Bit 8: the vertex list before the wrap holds an attribute besides the position, so it has current
   // values to copy, and its copy (playback_copy_to_current) sets Mesa's CurrentExecPrimitive; one of
   // positions alone returns before it (Context::node_ends).
   const int current = lists_.attributes != 0 ? 8 : 0;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | stale);
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | stale | before);
   note_vertexless_node();
   close_store();
 }
@@ -926,6 +946,7 @@ void Context::node_ends(bool draw, int loop, bool copy) {
 void Context::node_splits(bool draw, int copy, int joining) {
   const bool last = joining & 4, current = joining & 8;
   const int stale = (joining >> 4) & 3;
+  const bool before = joining & 64;
   joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
@@ -939,6 +960,8 @@ void Context::node_splits(bool draw, int copy, int joining) {
   if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
   if (stale & 1) node_values_.normal = lists_.last_vertex_normal;
   if (stale & 2) node_values_.color = lists_.last_vertex_color;
+  if (before && (joining & 1)) node_values_.normal = lists_.before_join_normal;
+  if (before && (joining & 2)) node_values_.color = lists_.before_join_color;
 }
 
 // Mesa's flushes of the values a list left pending (the rule of the unmerged reading of vbo_save,

@@ -271,6 +271,8 @@ struct ListState {
   // and which attributes followed its last one; running, the values that vertex took.
   bool had_vertex = false;
   int trailing = 0;  // bits: normal 1, colour 2
+  glm::dvec3 before_join_normal{0, 0, 1};  // the values before an attribute joined (Context::list_before_joining)
+  glm::dvec4 before_join_color{1, 1, 1, 1};
   glm::dvec3 last_vertex_normal{0, 0, 1};
   glm::dvec4 last_vertex_color{1, 1, 1, 1};
   // Mesa's vertex template keeps those trailing values: compiling, the attributes a later vertex of the

@@ -137,6 +137,8 @@ bool compiled_only(const A&... a) {
   if constexpr (K != ListKind::Vertex) {
     if (!ls.open) c->end_list_node();
   }
+  if constexpr (same_entry<Fn, &NormalValues>()) c->list_before_joining(*l, 1);
+  if constexpr (same_entry<Fn, &ColorValues>()) c->list_before_joining(*l, 2);
   l->record<Fn>(a...);
   [[maybe_unused]] const int trailing = ls.had_vertex ? ls.trailing : 0;  // what glEnd drops (Context::list_trailing)
   if constexpr (same_entry<Fn, &End>()) c->list_primitive_end(*l, trailing);
