@@ -345,6 +345,13 @@ void Context::hold_back(int kind, int size) {
     if (lists_.open_mode == GL_TRIANGLE_STRIP && lists_.vertices % 2) deviations_.insert(kListStripWrap);
     if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices > 0)
       deviations_.insert(kLineLoopWrap), deviations_.insert(kListLineLoopCurrent);
+    // A wrap at a line loop's first vertex (an attribute joining before it, the store holding an earlier
+    // primitive): the loop begins in this vertex list and its vertices are all in the next, where
+    // convert_line_loop_to_strip, seeing no glBegin there, skips the first: the segment from the first
+    // vertex to the second is lost. Measured (seed 299792 stream 17539029581890894252, repro
+    // list_loop_wrapped_at_first_vertex.txt): a GL_LINE_LOOP of two array elements whose first brings a
+    // colour array new to the format is fed back as one line.
+    if (lists_.open_mode == GL_LINE_LOOP && lists_.vertices == 0 && !lists_.wrapped) deviations_.insert(kLineLoopWrap);
     // The open primitive's rest begins in a vertex list of its own only if it had vertices before
     // the wrap (a wrap at its first vertex, of an earlier primitive's store, leaves it whole).
     if (lists_.vertices > 0) {
