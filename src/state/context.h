@@ -586,6 +586,11 @@ class Context {
   // (display_list.cpp, Context::node_ends): soft is outside glBegin/glEnd, and only the calls that
   // test CurrentExecPrimitive themselves see a primitive (outside_exec_primitive); glEnd ends it.
   bool exec_inside_ = false;
+  // What glGet reads meanwhile: Mesa's flushes return at once while CurrentExecPrimitive is set, so
+  // a glNormal, glColor or glMaterial then waits in its vbo until glEnd ends the primitive; these
+  // are the values of the moment it was set (Context::node_ends).
+  CurrentValues inside_values_{{0, 0, 1}, {1, 1, 1, 1}, {0, 0, 0, 1}};
+  lighting::MaterialParams inside_materials_[2];
   // A list's vertex list whose glBegin that refused: Mesa skips it whole (Context::Begin, node_ends).
   bool refused_node_ = false;
   std::vector<raster::Vertex> verts_;

@@ -944,6 +944,11 @@ void Context::node_ends(bool draw, int loop, bool copy) {
     if (loop & 2) color_ = lists_.loop_first_color;
   } else if (draw) {
     restore(node_values_);
+    // Measured (seed 161803 stream 8254993617977854356 shrunk, repro list_exec_inside_holds_values.txt):
+    // a list's glMaterialf after such a draw, or a glNormal after the list, reads back as before
+    // until a glEnd ends the primitive.
+    if (lists_.node_inside && !in_begin_ && !exec_inside_)
+      inside_values_ = current_values(), inside_materials_[0] = materials_[0], inside_materials_[1] = materials_[1];
     if (lists_.node_inside && !in_begin_) exec_inside_ = true;
   } else if (copy) {
     lists_.mesa_inside = exec_inside_ = false;  // its last primitive ended in it

@@ -78,9 +78,10 @@ int Context::get_values(GLenum pname, GLdouble* out, int& normalized) {
     case GL_CULL_FACE_MODE: FFC_GET(double(cull_mode_)); break;
     case GL_DEPTH_FUNC: FFC_GET(double(depth_func_)); break;
     // A wrapped GL_COMPILE_AND_EXECUTE primitive leaves them as they were (ListState::shown).
-    case GL_CURRENT_COLOR: vec4(lists_.shown ? lists_.shown_color : color_, true); break;
+    // While a list left Mesa's CurrentExecPrimitive set, as they were then (inside_values_).
+    case GL_CURRENT_COLOR: vec4(exec_inside_ ? inside_values_.color : lists_.shown ? lists_.shown_color : color_, true); break;
     case GL_CURRENT_NORMAL: {
-      const glm::dvec3& nv = lists_.shown ? lists_.shown_normal : normal_;
+      const glm::dvec3& nv = exec_inside_ ? inside_values_.normal : lists_.shown ? lists_.shown_normal : normal_;
       FFC_GET(nv.x, nv.y, nv.z);
       normalized = kFromFloat;
       break;

@@ -309,7 +309,8 @@ void Context::GetMaterialfv(GLenum face, GLenum pname, GLfloat* out) {
   if (face != GL_FRONT && face != GL_BACK) return error(GL_INVALID_ENUM);
   // Inside a list's wrapped primitive Mesa answers from its materials as the last copy left them
   // (mesa_materials_): a glMaterial or a colour tracked by colour material since then is in its vbo.
-  const lighting::MaterialParams& m = (lists_.shown ? mesa_materials_ : materials_)[face == GL_BACK];
+  // While a list left CurrentExecPrimitive set, as they were then (inside_materials_).
+  const lighting::MaterialParams& m = (exec_inside_ ? inside_materials_ : lists_.shown ? mesa_materials_ : materials_)[face == GL_BACK];
   glm::dvec4 v;
   switch (pname) {
     case GL_AMBIENT: v = m.ambient; break;
