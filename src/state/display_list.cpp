@@ -904,11 +904,12 @@ void Context::split_list_node(int joining) {
   const int stale = lists_.had_vertex ? (lists_.trailing & lists_.attributes & 3 & ~joining) << 4 : 0;
   // Bit 64: the wrapping attribute came before any vertex of the open primitive (list_before_joining).
   const int before = joining && lists_.open && !lists_.had_vertex ? 64 : 0;
+  const int element = lists_.held_element ? 128 : 0;
   // Bit 8: the vertex list before the wrap holds an attribute besides the position, so it has current
   // values to copy, and its copy (playback_copy_to_current) sets Mesa's CurrentExecPrimitive; one of
   // positions alone returns before it (Context::node_ends).
   const int current = lists_.attributes != 0 ? 8 : 0;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | stale | before);
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | stale | before | element);
   note_vertexless_node();
   close_store();
 }
@@ -958,7 +959,7 @@ void Context::node_ends(bool draw, int loop, bool copy) {
 void Context::node_splits(bool draw, int copy, int joining) {
   const bool last = joining & 4, current = joining & 8;
   const int stale = (joining >> 4) & 3;
-  const bool before = joining & 64;
+  const bool before = joining & 64, element = joining & 128;
   joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
@@ -968,6 +969,7 @@ void Context::node_splits(bool draw, int copy, int joining) {
   // glColor4f(0, 0, 0, 0) (the wrap), a compiled draw: GL_CURRENT_COLOR alpha 1 after glCallList;
   // repro list_draw_inside_begin_wrapped.txt).
   node_values_ = current_values(), lists_.node_inside = in_begin_ && current;
+  if (element) node_values_.normal = lists_.before_join_normal, node_values_.color = lists_.before_join_color;
   if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
   if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
   if (stale & 1) node_values_.normal = lists_.last_vertex_normal;
@@ -1032,6 +1034,17 @@ void Context::compile_draw_elements(DisplayList& l, GLenum mode, GLsizei count, 
 
 void Context::compile_element(DisplayList& l, GLint i) {
   const Fixed f = element_fixed();
+  // GL_COMPILE_AND_EXECUTE records the element into the list whole before it is held back, where a
+  // wrap it causes records the split after it: the values the vertex list before the wrap leaves are
+  // those from before the element (bit 128 of the split; measured, seed 161803 stream
+  // 6598746491301999856, repro list_executing_element_wraps.txt: a normal trailing a GL_TRIANGLE_FAN's
+  // vertex, glEnd, then glBegin and a glArrayElement whose colour array joins the format, and a
+  // compiled draw: glCallList leaves the fan's vertex's normal, not the trailing one the element's
+  // vertex carries).
+  if (&l == &lists_.compiling && !lists_.compiling_draw && lists_.open && list_executes() && !lists_.fallback)
+    l.record<list_value_before_joining>();
+  const bool held = &l == &lists_.held_back && !lists_.compiling_draw;
+  lists_.held_element = held;
   // A glArrayElement outside the list's glBegin/glEnd sets the pending values too (end_list_calls).
   const bool compiled = &l == &lists_.compiling && !lists_.compiling_draw;
   const bool outside = compiled && !lists_.open;
@@ -1072,6 +1085,7 @@ void Context::compile_element(DisplayList& l, GLint i) {
         l.record<list_loop_first_vertex>();
     }
   }
+  lists_.held_element = false;
 }
 
 }  // namespace ffc::state

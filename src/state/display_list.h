@@ -271,6 +271,7 @@ struct ListState {
   // and which attributes followed its last one; running, the values that vertex took.
   bool had_vertex = false;
   int trailing = 0;  // bits: normal 1, colour 2
+  bool held_element = false;  // a glArrayElement is being held back (Context::compile_element)
   glm::dvec3 before_join_normal{0, 0, 1};  // the values before an attribute joined (Context::list_before_joining)
   glm::dvec4 before_join_color{1, 1, 1, 1};
   glm::dvec3 last_vertex_normal{0, 0, 1};
