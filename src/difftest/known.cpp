@@ -388,23 +388,23 @@ const std::vector<KnownDeviation>& known_deviations() {
        }},
       {"current-undefined-after-draw",
        "GL 2.1 section 2.8: with the normal or colour array enabled, the current normal or colour is indeterminate after glDrawArrays / glDrawElements",
-       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult&) {
+       [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          const bool normal = m.key.find("GL_CURRENT_NORMAL") != std::string::npos;
          const bool colour = m.key.find("GL_CURRENT_COLOR") != std::string::npos;
          if (m.kind != "state" || !(normal || colour) || m.call < 0) return false;
-         // The last call before the checkpoint that sets the attribute.
-         // Only with the array enabled before the draw (a draw of no normal or colour array leaves the
-         // values defined: seed 299792 stream 6292637399379987596 hid a real difference here): an earlier one may have set it.
-         const GLenum array = normal ? GL_NORMAL_ARRAY : GL_COLOR_ARRAY;
-         for (int i = m.call - 1; i >= 0; --i) {
-           const std::string& n = name_of(s[size_t(i)]);
-           if ((n == "glDrawArrays" || n == "glDrawElements") && any_call(s, i, [&](const Call& c, size_t) {
-                 return (is(c, "glEnableClientState") || is(c, "glEnable")) && GLenum(c.args[0].num) == array;
-               }))
-             return true;
-           if (n == "glArrayElement" || n.rfind(normal ? "glNormal3" : "glColor", 0) == 0) return false;
+         // Whether the last call before the checkpoint that sets the attribute is a draw with its
+         // array on: a draw without it leaves the value defined (seed 299792 stream
+         // 6292637399379987596 hid a real difference here while any draw counted).
+         ArraysOn on;
+         bool undefined = false;
+         for (size_t i = 0; i < size_t(m.call) && i < s.size(); ++i) {
+           const std::string& n = name_of(s[i]);
+           on.follow(n, s[i], i < soft.errors.size() && soft.errors[i] == GL_NO_ERROR);
+           if (n == "glDrawArrays" || n == "glDrawElements") undefined = undefined || (normal ? on.normal : on.color);
+           if (n == "glArrayElement" || starts(n, normal ? "glNormal3" : "glColor3") || (colour && starts(n, "glColor4")))
+             undefined = false;
          }
-         return false;
+         return undefined;
        }},
       drawn("mesa-separate-specular-feedback",
             "feedback reports only the primary colour under GL_SEPARATE_SPECULAR_COLOR"),

@@ -313,5 +313,31 @@ TEST(Known, MaterialAfterLastPointIsNamedAlone) {
   EXPECT_FALSE(named(stream(GL_LINE_STRIP, true), "GL_FRONT, GL_SHININESS"));
 }
 
+TEST(Known, CurrentUndefinedAfterDrawOnlyWithItsArrayOn) {
+  // GL 2.1 section 2.8 leaves the current normal indeterminate after a draw only with the normal
+  // array enabled. A draw with no normal array (seed 299792 stream 6292637399379987596), or with it
+  // enabled and then disabled, or followed by a glNormal3f, leaves it defined: not named.
+  const auto stream = [](bool enable, bool disable, bool normal_after) {
+    Stream s;
+    if (enable) s.push_back(make_call("glEnableClientState", {n(GL_NORMAL_ARRAY)}));
+    if (disable) s.push_back(make_call("glDisableClientState", {n(GL_NORMAL_ARRAY)}));
+    s.push_back(make_call("glDrawArrays", {n(GL_POINTS), n(0), n(0)}));
+    if (normal_after) s.push_back(make_call("glNormal3f", {n(0), n(0), n(1)}));
+    s.push_back(make_call("checkpoint", {}));
+    return s;
+  };
+  SideResult ok;
+  ok.errors.assign(8, GL_NO_ERROR);
+  const auto named = [&](const Stream& s, const char* key) {
+    const KnownDeviation* d = explain(s, Mismatch{"state", key, int(s.size()) - 1, ""}, ok, ok);
+    return d && d->name == "current-undefined-after-draw";
+  };
+  EXPECT_TRUE(named(stream(true, false, false), "state glGetDoublev(GL_CURRENT_NORMAL)"));
+  EXPECT_FALSE(named(stream(true, false, false), "state glGetDoublev(GL_CURRENT_COLOR)"));
+  EXPECT_FALSE(named(stream(false, false, false), "state glGetDoublev(GL_CURRENT_NORMAL)"));
+  EXPECT_FALSE(named(stream(true, true, false), "state glGetDoublev(GL_CURRENT_NORMAL)"));
+  EXPECT_FALSE(named(stream(true, false, true), "state glGetDoublev(GL_CURRENT_NORMAL)"));
+}
+
 }  // namespace
 }  // namespace ffc::difftest
