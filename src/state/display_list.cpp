@@ -684,9 +684,9 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     // A compiled draw is the second of row 71's pair after another draw (measured: a GL_TRIANGLES
     // draw of two, then a GL_QUADS draw of one), and the first before a glBegin.
     const int drawn = vertex_array_.enabled ? int(count) : 0;
-    if (lists_.node_last_draw && two_then_one_crashes(lists_.node_last_mode, lists_.node_last_count, mode, drawn))
+    if (two_then_one_crashes(lists_.node_last_mode, lists_.node_last_count, mode, drawn))
       deviations_.insert(kListTwoThenQuadCrash);
-    lists_.node_last_mode = mode, lists_.node_last_count = drawn, lists_.node_last_draw = true;
+    lists_.node_last_mode = mode, lists_.node_last_count = drawn;
   }
   if (!(ends_open && executing)) l.record<list_begin>(mode);
   lists_.compiling_draw = true;
@@ -759,13 +759,16 @@ void Context::start_list_node(bool draw) {
 // other pairs of modes (measured over every pair of the six triangle and quad modes, one to three
 // vertices each; seed 299792 stream 2831664394777852868 found the strip and the quad strip; repro
 // list_strip_then_quad_crash.txt; two_then_one_crashes). A compiled draw counts as either
-// primitive, but a draw of one quad after a glBegin/glEnd pair did not crash (measured). The write
-// that overflows was not found in the source. `open`: the primitive is still open.
+// primitive, after a glBegin/glEnd pair too: measured (seed 141421 stream 4449590931373811147, repro
+// list_pair_then_quad_draw_crash.txt), GL_TRIANGLES, GL_TRIANGLE_FAN, GL_TRIANGLE_STRIP or GL_POLYGON
+// of two vertices, then a glDrawArrays(GL_QUADS or GL_QUAD_STRIP) of one aborts at glCallList (the
+// note of Stop 26 that it did not crash had compiled the list without calling it). The write that
+// overflows was not found in the source. `open`: the primitive is still open.
 void Context::note_node_primitive(bool open) {
   const int count = lists_.vertices + lists_.wrap_copies;  // its vertices in this vertex list
   if (two_then_one_crashes(lists_.node_last_mode, lists_.node_last_count, lists_.open_mode, count))
     deviations_.insert(kListTwoThenQuadCrash);
-  if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count, lists_.node_last_draw = false;
+  if (!open) lists_.node_last_mode = lists_.open_mode, lists_.node_last_count = count;
   note_node_mode(lists_.open_mode, count);
 }
 

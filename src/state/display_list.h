@@ -237,7 +237,6 @@ struct ListState {
   // it has there (kListTwoThenQuadCrash, Context::note_node_primitive).
   GLenum node_last_mode = 0;
   int node_last_count = 0;
-  bool node_last_draw = false;  // the last was a compiled draw
   // GL_COMPILE_AND_EXECUTE: a primitive too short to draw is among the calls held back since the last
   // flush (run_held_back: Mesa's executing side feeds it back padded, kListIncompleteFedBack).
   bool held_incomplete = false;
