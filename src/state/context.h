@@ -557,6 +557,14 @@ class Context {
   };
   CurrentValues current_values() const { return {normal_, color_, texcoord_}; }
   CurrentValues node_values_{{0, 0, 1}, {1, 1, 1, 1}, {0, 0, 0, 1}};  // before a list's vertex list ran
+  // With them, the materials and the colour colour material last tracked (a compiled draw's colours
+  // are tracked in soft as it replays them; Mesa's vertex list of the draw copies nothing).
+  lighting::MaterialParams node_materials_[2];
+  glm::dvec4 node_flushed_color_{1, 1, 1, 1};
+  void keep_node_values() {
+    node_values_ = current_values();
+    node_materials_[0] = materials_[0], node_materials_[1] = materials_[1], node_flushed_color_ = flushed_color_;
+  }
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
     normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
     color_size_ = color_active_ = 0, normal_in_format_ = false;

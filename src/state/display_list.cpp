@@ -919,7 +919,7 @@ void Context::split_list_node(int joining) {
 
 void Context::node_begins() {
   flush_pending(true);
-  node_values_ = current_values();
+  keep_node_values();
   lists_.node_inside = in_begin_ || exec_inside_;
 }
 
@@ -947,12 +947,19 @@ void Context::node_ends(bool draw, int loop, bool copy) {
     if (loop & 1) normal_ = lists_.loop_first_normal;
     if (loop & 2) color_ = lists_.loop_first_color;
   } else if (draw) {
+    // Measured (seed 173205 stream 10873261804190826188 shrunk, repro list_draw_node_keeps_materials.txt):
+    // with colour material on, a compiled draw inside a glBegin whose vertex list copies nothing leaves
+    // the material the vertex list before it tracked, not the draw's last colour.
     restore(node_values_);
+    materials_[0] = node_materials_[0], materials_[1] = node_materials_[1], flushed_color_ = node_flushed_color_;
+    constants_dirty_ = true;
     // Measured (seed 161803 stream 8254993617977854356 shrunk, repro list_exec_inside_holds_values.txt):
     // a list's glMaterialf after such a draw, or a glNormal after the list, reads back as before
     // until a glEnd ends the primitive.
-    if (lists_.node_inside && !in_begin_ && !exec_inside_)
+    if (lists_.node_inside && !in_begin_ && !exec_inside_) {
+      copy_pending();  // the vertex lists' copies track colour material at once
       inside_values_ = current_values(), inside_materials_[0] = materials_[0], inside_materials_[1] = materials_[1];
+    }
     if (lists_.node_inside && !in_begin_) exec_inside_ = true;
   } else if (copy) {
     lists_.mesa_inside = exec_inside_ = false;  // its last primitive ended in it
@@ -971,7 +978,7 @@ void Context::node_splits(bool draw, int copy, int joining) {
   // this vertex list's last vertex's, not the wrapping attribute's (measured: glColor3f, glVertex,
   // glColor4f(0, 0, 0, 0) (the wrap), a compiled draw: GL_CURRENT_COLOR alpha 1 after glCallList;
   // repro list_draw_inside_begin_wrapped.txt).
-  node_values_ = current_values(), lists_.node_inside = in_begin_ && current;
+  keep_node_values(), lists_.node_inside = in_begin_ && current;
   if (element) node_values_.normal = lists_.before_join_normal, node_values_.color = lists_.before_join_color;
   if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
   if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;

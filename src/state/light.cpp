@@ -163,6 +163,14 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
     }
   }
   constants_dirty_ = true;
+  // A glMaterial a list runs asks Mesa's vbo for FLUSH_UPDATE_CURRENT as a glColor does, so a
+  // glEnable(GL_COLOR_MATERIAL) after it (a FLUSH_CURRENT) leaves a flush of stored vertices asked
+  // for, which forgets the list's pending colour at the next vertex list (Context::flush_pending).
+  // Measured (seed 173205 stream 10873261804190826188 shrunk, repro list_material_then_pending_colour.txt):
+  // glMaterialfv(GL_BACK, GL_SHININESS), glEnable(GL_COLOR_MATERIAL), glColor3fv, then glBegin, glColor3fv,
+  // glVertex, glEnd: the current colour after glCallList is the vertex's; without the glMaterialfv,
+  // the pending one.
+  if (!in_begin_ && !spec_ && lists_.calling && !lists_.replaying_loopback) lists_.need_update = true;
   return true;
 }
 
