@@ -419,11 +419,26 @@ GLuint Context::GenLists(GLsizei range) {
   if (range < 0) return error(GL_INVALID_VALUE), 0;
   if (range == 0) return 0;
   // Mesa's hash table gives out the name after the largest it ever held (names deleted below it are
-  // not reused while that leaves room), and holds the names given out, empty, until compiled.
-  if (lists_.max_name > ~GLuint(0) - 1 - GLuint(range)) return 0;  // Mesa's search from 1 not modelled
-  const GLuint first = lists_.max_name + 1;
+  // not reused while that leaves room), and holds the names given out, empty, until compiled. Where
+  // that leaves no room (_mesa_HashFindFreeKeyBlock: the largest key is ~0 - 1), it searches from 1
+  // for the first run of free names (measured, seed 173205 stream 7473006779468165034: glNewList(-1),
+  // glEndList, glGenLists(3) returns 1; repro gen_lists_after_largest_name.txt).
+  constexpr GLuint kMaxKey = ~GLuint(0) - 1;
+  GLuint first = 0;
+  if (kMaxKey - GLuint(range) > lists_.max_name) {
+    first = lists_.max_name + 1;
+  } else {
+    GLuint free_start = 1;
+    for (const auto& entry : lists_.lists) {
+      if (entry.first >= kMaxKey) break;
+      if (entry.first >= free_start && entry.first - free_start >= GLuint(range)) break;
+      free_start = std::max(free_start, entry.first + 1);
+    }
+    if (free_start >= kMaxKey || kMaxKey - free_start < GLuint(range)) return 0;
+    first = free_start;
+  }
   for (GLsizei k = 0; k < range; ++k) lists_.lists[first + GLuint(k)];
-  lists_.max_name = first + GLuint(range) - 1;
+  lists_.max_name = std::max(lists_.max_name, first + GLuint(range) - 1);
   return first;
 }
 
