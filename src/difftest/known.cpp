@@ -508,10 +508,15 @@ const std::vector<KnownDeviation>& known_deviations() {
          bool material = false;
          const int at = vertexless_list_primitive(s, soft, &material);
          const bool material_read = material && m.kind == "state" && m.key.find("glGetMaterialfv") != std::string::npos;
-         if (!current_values(s, m) && !material_read) return false;
+         // What is drawn with those values afterwards differs too (seed 173205 stream
+         // 9957378043699921596: a triangle drawn without a colour array after the list, in Mesa's
+         // unwritten colour; repro list_vertexless_colour_drawn.txt).
+         const bool drawing = m.kind == "pixels" || m.kind == "readpixels" || m.kind == "feedback" ||
+                              (m.kind == "return" && m.call >= 0 && is(s[size_t(m.call)], "glRenderMode"));
+         if (!current_values(s, m) && !material_read && !drawing) return false;
          // Soft's model names the wider case too (a wrap with nothing to copy: 2026 stream 972).
-         return (at >= 0 && m.call > at) || std::find(soft.deviations.begin(), soft.deviations.end(),
-                                                       state::kListVertexlessNode) != soft.deviations.end();
+         return (at >= 0 && (m.call < 0 || m.call > at)) ||
+                std::find(soft.deviations.begin(), soft.deviations.end(), state::kListVertexlessNode) != soft.deviations.end();
        }},
       // Row 65: measured, glBegin(GL_LINE_LOOP), glVertex, glColor3f(.5, .25, 1), glVertex, glEnd in a
       // list reads back (0, 0, 0, 1) after glCallList (and in GL_COMPILE_AND_EXECUTE after the next
