@@ -250,6 +250,7 @@ class Context {
   void mark_list_attribute(DisplayList& l, int kind);  // a glNormal (1) or glColor (2) compiled outside the list's glBegin/glEnd
   void keep_pending(int kind);  // such a call has run from a list: its value waits for a flush
   void list_loopback(int kinds, int kind, bool first_format);  // run from a list: a wrapped primitive's rest replays these attributes over the pending ones
+  bool store_fills(GLsizei count) const;  // a compiled draw overfills the list's vertex store
   void list_before_joining(DisplayList& l, int kind);  // an attribute about to join the list's format
   void value_before_joining();  // run from a list: the values before such an attribute
   void list_trailing(DisplayList& l, int kind);  // an attribute compiled after a vertex of the list's primitive

@@ -649,6 +649,13 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   // (vbo_loopback_vertex_list): the list's glBegin opens the primitive, empty; the draw's glBegin
   // raises GL_INVALID_OPERATION there (measured at the flush, glEndList), its vertices join the open
   // primitive and its glEnd ends it.
+  // In GL_COMPILE_AND_EXECUTE the list's own pass of the draw comes first, before the held-back pass
+  // that forms the store: a fill's split goes in before the draw's calls, so that the vertex list it
+  // compiles is the one before the draw (measured, seed 173205 stream 5826937791591943647, repro
+  // list_store_fill_vertexless.txt: a GL_POINTS wrapped by a colour with nothing to copy, then a draw
+  // too large for the store, compiles a vertex list with attributes and no vertex, row 55's unwritten
+  // values after glCallList, and leaves Mesa inside the points).
+  if (count > 0 && &l == &lists_.compiling && list_executes() && store_fills(count)) split_list_node();
   const bool ends_open = lists_.open && !lists_.compiling_draw;
   const bool executing = &l == &lists_.held_back;
   // The vertices dropped: those sent since the primitive's glBegin or its last wrap (a wrap's first
@@ -675,8 +682,6 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     // (drawn at once in GL_COMPILE_AND_EXECUTE, a wrapped primitive ended; measured: a
     // glDrawArrays of 2^20 vertices after a wrapped glBegin/glEnd finds the executing side outside
     // it). The draws of the generator's huge category are the ones this meets.
-    const int format_floats = lists_.position_size + ((lists_.attributes & 1) ? 3 : 0) + lists_.color_size +
-                              ((lists_.attributes & 4) ? 4 : 0) + ((lists_.attributes & 8) ? 1 : 0);
     // The next vertex list then begins with the store's last primitive restarted, empty and without
     // its glBegin (wrap_filled_vertex), and Mesa joins the draw to it where the modes are the same
     // and join (vbo_merge_draws): the draw is then a primitive without a glBegin, whose glEnd,
@@ -684,12 +689,12 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     // next flush of a GL_COMPILE_AND_EXECUTE list (measured: list_store_fills.txt) and when a list
     // replayed so (DisplayList::loopback) runs (measured: glCallList of such a list raises it, of
     // one without the wrap nothing; repro list_store_fills_loopback.txt).
-    if (lists_.prims > 0 && (double(lists_.stored) + double(count)) * format_floats * 4 > ListState::kStoreBytes) {
+    if (store_fills(count)) {
       merged = lists_.open_mode == mode &&
                (mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS);
       if (list_executes()) run_held_back(false), lists_.refill_error = merged;
       lists_.stored = 0;
-      split_list_node();
+      if (!list_executes()) split_list_node();  // GL_COMPILE_AND_EXECUTE: split in the list's own pass
     }
     lists_.open = true, lists_.open_mode = mode, lists_.vertices = 0, lists_.wrapped = false, ++lists_.prims;
     lists_.wrap_copies = 0, lists_.closing_loop = lists_.loop_restarted = false;
@@ -717,6 +722,14 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
   if (format) lists_.open = false, lists_.closing_loop = mode == GL_LINE_LOOP;
   l.record<list_end>();
   if (merged) lists_.compiling.record<list_stray_end>();  // after the draw, in either list mode
+}
+
+// Whether a compiled draw of `count` vertices overfills Mesa's vertex store (256 Ki bytes, counted
+// with the format as it is) with a primitive already stored (compile_elements).
+bool Context::store_fills(GLsizei count) const {
+  const int format_floats = lists_.position_size + ((lists_.attributes & 1) ? 3 : 0) + lists_.color_size +
+                            ((lists_.attributes & 4) ? 4 : 0) + ((lists_.attributes & 8) ? 1 : 0);
+  return lists_.prims > 0 && (double(lists_.stored) + double(count)) * format_floats * 4 > ListState::kStoreBytes;
 }
 
 // The last `drop` vertices of the open primitive are forgotten; it is ended too unless keep_open
