@@ -356,7 +356,9 @@ void Context::End() {
   // Where a list left Mesa's CurrentExecPrimitive set (exec_inside_), its glEnd ends that primitive,
   // which holds no vertex: no error, nothing drawn.
   if (!in_begin_ && refused_node_) return;
-  if (!in_begin_ && exec_inside_) return void(exec_inside_ = false);
+  // Mesa is outside again, so a list's vertex list flushes what a list left pending again (measured,
+  // seed 173205 stream 10873261804190826188 shrunk, repro list_calls_itself_pending_colour.txt).
+  if (!in_begin_ && exec_inside_) return void(exec_inside_ = lists_.mesa_inside = false);
   if (!in_begin_) return error(GL_INVALID_OPERATION);
   in_begin_ = store_corners_ = false;
   if (!immediate_list_) early_join();  // (none in flight: leave_triangle_list joined it) else immediate_to_list
