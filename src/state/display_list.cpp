@@ -1096,14 +1096,14 @@ void Context::compile_element(DisplayList& l, GLint i) {
     if (inside) list_trailing(l, 1);
     if (format) hold_back(1), store_vertex(1, n);
     l.record<list_normal>(n.x, n.y, n.z);
-    if (outside) mark_list_attribute(l, 1);
+    if (outside) mark_list_attribute(l, 1), store_vertex(1, n);
   }
   if (color_array_.enabled && color_array_.pointer) {
     const glm::dvec4 c = attribute(color_array_, i, color_array_.size, f, glm::dvec4(1));
     if (inside) list_trailing(l, 2);
     if (format) hold_back(2, int(color_array_.size)), store_vertex(2, c);
     l.record<list_color>(c.r, c.g, c.b, c.a, int(color_array_.size));
-    if (outside) mark_list_attribute(l, 2);
+    if (outside) mark_list_attribute(l, 2), store_vertex(2, c);
   }
   if (vertex_array_.enabled && vertex_array_.pointer) {
     const glm::dvec4 v = attribute(vertex_array_, i, vertex_array_.size, Fixed::Raw, glm::dvec4(0, 0, 0, 1));

@@ -86,8 +86,13 @@ bool compiled_only(const A&... a) {
   if (K == ListKind::Vertex && !begin_or_end && !ls.open) {
     c->end_list_node();  // Mesa's vertex lists: display_list.cpp, Context::start_list_node
     l->record<Fn>(a...);
-    if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1);
-    if constexpr (same_entry<Fn, &ColorValues>()) c->mark_list_attribute(*l, 2);
+    // The compiler's own current value too (ListState.CurrentAttrib: Context::copied_vertex_values).
+    if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1), c->store_vertex(1, glm::dvec4(a..., 0.0));
+    if constexpr (same_entry<Fn, &ColorValues>()) {
+      c->mark_list_attribute(*l, 2);
+      const auto v = std::tie(a...);
+      c->store_vertex(2, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
+    }
     if (!c->list_executes()) return true;
     c->run_held_back();
     return false;
