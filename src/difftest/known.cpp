@@ -461,6 +461,12 @@ const std::vector<KnownDeviation>& known_deviations() {
       // a strip of three with normals (.5, 0, 0), (0, .5, 0), (0, 0, .5) wrapped by a first glColor
       // reads back the second's normal; of one, the normal from before the list; repro
       // list_strip_wrap_current.txt).
+      // Row 55: the executing side's errors after a store fill by draws of no vertex (Context::compile_elements).
+      {"mesa-list-fill-empty-draw-error", state::kListFillEmptyDraw,
+       [](const Stream&, const Mismatch& m, const SideResult&, const SideResult& soft) {
+         return m.kind == "error" && std::find(soft.deviations.begin(), soft.deviations.end(),
+                                               state::kListFillEmptyDraw) != soft.deviations.end();
+       }},
       {"mesa-list-strip-wrap-current", state::kListStripWrap,
        [](const Stream& s, const Mismatch& m, const SideResult&, const SideResult& soft) {
          return current_values(s, m) && std::find(soft.deviations.begin(), soft.deviations.end(),

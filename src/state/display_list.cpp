@@ -692,6 +692,13 @@ void Context::compile_elements(DisplayList& l, GLenum mode, GLsizei count, const
     if (store_fills(count)) {
       merged = lists_.open_mode == mode &&
                (mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS);
+      // A draw that stores no vertex (no vertex array) after such a fill: where Mesa's executing side
+      // raises GL_INVALID_OPERATION then depends on more than soft models (measured in an OSMesa
+      // program, a GL_TRIANGLES or GL_LINE_LOOP of one or three vertices, with a normal after the last
+      // or not, then two such draws and a glMaterialfv: the error at the second draw, at the
+      // glMaterialfv, at both, or nowhere; seed 223606 streams 6657219071999797025 and
+      // 12307679055406691739, repros list_store_fills_without_vertices*.txt). Named (row 55).
+      if (list_executes() && !(vertex_array_.enabled && vertex_array_.pointer)) deviations_.insert(kListFillEmptyDraw);
       if (list_executes()) run_held_back(false), lists_.refill_error = merged;
       lists_.stored = 0;
       if (!list_executes()) split_list_node();  // GL_COMPILE_AND_EXECUTE: split in the list's own pass

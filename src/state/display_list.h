@@ -101,6 +101,13 @@ inline constexpr const char* kListVertexlessNode =
     "following before the flush): when the list is called, Mesa copies the current values from a slot of its "
     "vertex store that vertex list never wrote; soft leaves them as the vertices sent left them";
 
+// Row 55 (docs/deviations.md): named, not modelled (Context::compile_elements).
+inline constexpr const char* kListFillEmptyDraw =
+    "a GL_COMPILE_AND_EXECUTE list's compiled draw too large for Mesa's vertex store that stores no vertex (no "
+    "vertex array): where Mesa's executing side then raises GL_INVALID_OPERATION (at a later such draw, at the "
+    "next flush, or nowhere) is not modelled; soft raises it at the next flush where the draw joins the "
+    "restarted primitive";
+
 // The fewest vertices a primitive of this mode draws anything with.
 inline int fewest_vertices(GLenum mode) {
   switch (mode) {
