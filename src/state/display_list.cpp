@@ -385,7 +385,11 @@ void Context::hold_back(int kind, int size) {
       if (list_executes()) lists_.held_back.record<list_copied_vertex_values>(kind, v.x, v.y, v.z, v.w);
     }
     if (list_executes()) run_held_back(false);
-    lists_.vertices = lists_.stored = 0, lists_.prims = 1, lists_.wrap_copies = copies, lists_.node_vertices = copies;
+    // The copies are in the new store (upgrade_vertex replays them there), so an attribute joining
+    // before the next vertex wraps again (measured, seed 223606 stream 6758869464152990923, repro
+    // list_copies_wrap_again.txt: a GL_QUADS of one vertex wrapped by a colour, then a GL_LINE_LOOP
+    // whose glColor4fv grows the colour before its first vertex restarts the loop: row 68).
+    lists_.vertices = 0, lists_.stored = copies, lists_.prims = 1, lists_.wrap_copies = copies, lists_.node_vertices = copies;
   }
   if (kind < 0) {
     if (lists_.open && lists_.vertices == 0 && !lists_.wrapped) lists_.first_format = lists_.attributes;
