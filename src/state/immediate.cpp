@@ -16,6 +16,11 @@ void Context::Normal(double x, double y, double z) {
     normal_in_format_ = true;
   }
   normal_ = {x, y, z};
+  // A list replayed through immediate mode writes its vertices' normals into the vbo slot a normal
+  // the list left pending waits in (measured, seed 223606 stream 5306296736714326599, repro
+  // list_loopback_replaces_pending.txt: a glNormal outside glBegin, then a vertex with a normal from
+  // an array, in a list replayed so: the vertex's normal is current after glCallList).
+  if (lists_.calling && lists_.replaying_loopback) lists_.pending &= ~1;
 }
 
 void Context::Color(double r, double g, double b, double a, int components) {
@@ -47,6 +52,7 @@ void Context::Color(double r, double g, double b, double a, int components) {
     else if (components == 3 && !(lists_.depth > 0 && in_begin_)) a = color_.a;
   }
   color_ = {r, g, b, a};
+  if (lists_.calling && lists_.replaying_loopback) lists_.pending &= ~2;  // as for the normal (Normal)
   if (in_begin_ && !color_varies_) color_varies_ = true, constants_dirty_ = true;
   if (!spec_) return;  // tracked at the next flush (see update_color_material)
   flushed_color_ = color_;  // GL 2.1: tracked at once
