@@ -66,7 +66,10 @@ template <typename T>
 ClipVertex<T> interp(T t, const ClipVertex<T>& out, const ClipVertex<T>& in) {
   ClipVertex<T> r;
   r.clip = out.clip + t * (in.clip - out.clip);
-  for (int k = 0; k < 4; ++k) r.c[k] = out.c[k] + t * (in.c[k] - out.c[k]);
+  // Equal ends give that value: the same bits as the formula, but a -0 (a NaN colour clamped,
+  // vertex_stage.cpp clamp_unlit, which Mesa interpolates as NaN and feeds back as 1) stays -0.
+  for (int k = 0; k < 4; ++k)
+    r.c[k] = glm::mix(out.c[k] + t * (in.c[k] - out.c[k]), out.c[k], glm::equal(out.c[k], in.c[k]));
   r.fog = out.fog + t * (in.fog - out.fog);
   r.source = -1;
   return r;

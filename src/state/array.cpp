@@ -82,6 +82,7 @@ void Context::ArrayElement(GLint i) {
 // per vertex when it comes from an array.
 void Context::begin_draw() {
   flush_stored();
+  color_in_begin_format_ = false;
   texcoord_varies_ = false;
   set_color_varies(color_array_.enabled);
 }

@@ -595,6 +595,7 @@ class Context {
   // (display_list.cpp, Context::node_ends): soft is outside glBegin/glEnd, and only the calls that
   // test CurrentExecPrimitive themselves see a primitive (outside_exec_primitive); glEnd ends it.
   bool exec_inside_ = false;
+  bool color_in_begin_format_ = false;  // Mesa stores the colour with each vertex of this glBegin (Begin)
   // What glGet reads meanwhile: Mesa's flushes return at once while CurrentExecPrimitive is set, so
   // a glNormal, glColor or glMaterial then waits in its vbo until glEnd ends the primitive; these
   // are the values of the moment it was set (Context::node_ends).

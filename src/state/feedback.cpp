@@ -55,7 +55,8 @@ void Context::feedback_primitive(GLenum kind, const raster::WindowVertex* w, siz
       ++n;
       if (feedback_type_ == GL_4D_COLOR_TEXTURE) feedback_put(1 / v->inv_w);
       if (feedback_type_ == GL_3D_COLOR || feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
-        for (int k = 0; k < 4; ++k) feedback_put(v->color[k]);
+        for (int k = 0; k < 4; ++k)  // -0: a NaN clamped (vertex_stage.cpp, clamp_unlit), fed back as 1
+          feedback_put(v->color[k] == 0 && std::signbit(v->color[k]) ? 1.0 : double(v->color[k]));
       if (feedback_type_ == GL_3D_COLOR_TEXTURE || feedback_type_ == GL_4D_COLOR_TEXTURE)
         for (int k = 0; k < 4; ++k) feedback_put(texcoord_[k]);
     }

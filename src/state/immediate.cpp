@@ -211,6 +211,10 @@ void Context::Begin(GLenum mode) {
   else if (!format_has_position_ && (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()))
     vertices_kept_ = false;
   flush_stored_keeping_format(true);
+  // A colour still in Mesa's vbo format (one whose format held a position, so this glBegin flushed
+  // nothing) is stored with each vertex, as a glColor inside glBegin is; otherwise the vertices draw
+  // the current colour, a constant (vertex_stage.cpp clamp_unlit: a NaN differs between the two).
+  color_in_begin_format_ = !spec_ && color_size_ > 0;
   set_color_varies(false);
   wrap_start_ = 0;
   in_begin_ = true;

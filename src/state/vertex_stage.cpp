@@ -25,6 +25,19 @@
 namespace ffc::state {
 
 namespace {
+
+// An unlit colour channel clamped to [0, 1]. A NaN (an unspecified input, 2.1.1) per vertex (a
+// glColor inside glBegin, a colour array) Mesa clamps to 1, drawn and fed back; but the current
+// colour drawn for every vertex (no colour in the vertex format) llvmpipe draws as 0 in that
+// channel, while Mesa's feedback reports 1. Measured in OSMesa programs (seed 223606 stream
+// 974178983316683165, repro nan_colour_drawn_as_zero.txt): glColor4fv with a NaN alpha before
+// glBegin, points, lines and triangles drawn with alpha 0, fed back with 1; the same NaN inside
+// glBegin, or from an array, or sent after an earlier glBegin/glEnd's vertices and before this
+// glBegin (still in Mesa's vbo format, stored with each vertex), drawn as 1. So a constant NaN
+// becomes -0: drawn as 0, fed back as 1 (feedback.cpp); every other value clamps to +0 at most.
+inline double clamp_unlit(double c, bool constant) {
+  return c >= 1 ? 1.0 : c > 0 ? c : c <= 0 ? 0.0 : constant ? -0.0 : 1.0;
+}
 constexpr int kBatch = 64;                // vertices per call of the lighting kernel
 constexpr GLint kParallelStage = 2048;   // below this one thread runs the stage for a whole draw
 constexpr size_t kPendingBatch = 4 * kBatch;  // vertices kept before the stage runs on them
@@ -144,8 +157,7 @@ class VertexStage {
       // current fog coordinate, which stays 0 here (no glFogCoord).
       if (fog_depth_) out.fog[j] = std::abs(double(e.z));
       if (!lit) {
-        // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
-        for (int k = 0; k < 4; ++k) out.unlit[j][k] = !(in.color[k] < 1) ? 1.0 : in.color[k] > 0 ? in.color[k] : 0.0;
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = clamp_unlit(in.color[k], constant_color());
         continue;
       }
       // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
@@ -182,8 +194,7 @@ class VertexStage {
       const VertexIn in = fetch(first + j);
       for (int k = 0; k < 4; ++k) obj[k][j] = float(in.obj[k]);
       if (!lit) {
-        // Clamped to [0,1]; a NaN (unspecified input, 2.1.1) to 1 as in Mesa, so none reaches the rasterizer.
-        for (int k = 0; k < 4; ++k) out.unlit[j][k] = !(in.color[k] < 1) ? 1.0 : in.color[k] > 0 ? in.color[k] : 0.0;
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = clamp_unlit(in.color[k], constant_color());
         continue;
       }
       for (int k = 0; k < 4; ++k) color[k][j] = float(in.color[k]);
@@ -224,8 +235,7 @@ class VertexStage {
     if (!lit) {
       for (int j = 0; j < m; ++j) {
         const glm::dvec4 c = colors ? colors[j] : f.cur_color;
-        // Clamped to [0,1], a NaN to 1, as the generic fetch (run_columns).
-        for (int k = 0; k < 4; ++k) unlit[j][k] = !(c[k] < 1) ? 1.0 : c[k] > 0 ? c[k] : 0.0;
+        for (int k = 0; k < 4; ++k) unlit[j][k] = clamp_unlit(c[k], constant_color());  // as run_columns
       }
       return;
     }
@@ -304,7 +314,7 @@ class VertexStage {
         for (int k = 0; k < 4; ++k) rgba[k] = c_.color_[k];
       }
       if (!lit) {  // as run_columns clamps it
-        for (int k = 0; k < 4; ++k) unlit[j][k] = !(rgba[k] < 1) ? 1.0 : rgba[k] > 0 ? rgba[k] : 0.0;
+        for (int k = 0; k < 4; ++k) unlit[j][k] = clamp_unlit(rgba[k], constant_color());
         continue;
       }
       for (int k = 0; k < 4; ++k) color[k][j] = ca.enabled ? float(rgba[k]) : current[k];
@@ -328,6 +338,8 @@ class VertexStage {
   }
 
   const Context& c_;
+  // The current colour drawn for every vertex (clamp_unlit): none per vertex in Mesa.
+  bool constant_color() const { return !c_.color_varies_ && !c_.color_in_begin_format_; }
   const bool float_arrays_;
   const glm::dmat3 inv_;
   const double rescale_;  // 0: no rescale
