@@ -114,9 +114,16 @@ GLint Context::RenderMode(GLenum mode) {
 }
 // glPassThrough: a marker in the feedback buffer (GL_PASS_THROUGH_TOKEN, then the value); nothing
 // in the other modes.
+// Mesa's glPassThrough flushes (FLUSH_VERTICES) only in feedback mode; elsewhere it checks for
+// glBegin/glEnd and does nothing (measured, seed 244949 stream 3617352611758767512, repro
+// pass_through_flushes_in_feedback_only.txt: a GL_COMPILE_AND_EXECUTE list's draw, glPassThrough in
+// GL_RENDER, then a wrapped glBegin: the colour read inside it is from before the draw).
 void Context::PassThrough(GLfloat token) {
+  if (render_mode_ != GL_FEEDBACK) {
+    if (in_begin_) error(GL_INVALID_OPERATION);
+    return;
+  }
   if (!outside_begin_end()) return;
-  if (render_mode_ != GL_FEEDBACK) return;
   feedback_put(GL_PASS_THROUGH_TOKEN);
   feedback_put(token);
 }
