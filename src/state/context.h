@@ -568,7 +568,7 @@ class Context {
   }
   void restore(const CurrentValues& v) {  // and the vbo format is empty after a draw, as at its start
     normal_ = v.normal, color_ = v.color, texcoord_ = v.texcoord;
-    color_size_ = color_active_ = 0, normal_in_format_ = false;
+    color_size_ = color_active_ = 0, normal_in_format_ = false, material_attrs_ = 0;
   }
   struct PendingMaterial {
     glm::dvec4* dst;
@@ -576,6 +576,7 @@ class Context {
   };
   std::vector<PendingMaterial> pending_materials_;  // glMaterial values copied again at each flush
   bool material_in_format_ = false;  // a glMaterial outside glBegin since the format's reset, shininess too (mesa_materials_)
+  uint32_t material_attrs_ = 0;      // the material parameters in Mesa's vbo format, 8 bits a face (set_material)
   ClientArray vertex_array_{false, 4, GL_FLOAT, 0, nullptr}, normal_array_{false, 3, GL_FLOAT, 0, nullptr},
       color_array_{false, 4, GL_FLOAT, 0, nullptr};
 

@@ -206,9 +206,10 @@ void Context::Begin(GLenum mode) {
   validate_matrices();  // Mesa validates its state before it checks the mode
   if (!valid_primitive(mode)) return error(primitive_error(mode));
   // Mesa's glBegin asks for no flush: its glEnd does when the primitive left vertices stored
-  // (End). Its own flush of a format without a position answers the flush asked for so far.
-  if (lists_.depth > 0) vertices_kept_ = !spec_;  // a list's primitive: as before (not measured)
-  else if (!format_has_position_ && (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()))
+  // (End), a list's primitive too (a glBegin a list runs counted as storing until seed 244949
+  // stream 14039353168182627223: repro material_joins_format_in_begin.txt). Its own flush of a
+  // format without a position answers the flush asked for so far.
+  if (!format_has_position_ && (color_size_ > 0 || normal_in_format_ || !pending_materials_.empty()))
     vertices_kept_ = false;
   flush_stored_keeping_format(true);
   // A colour still in Mesa's vbo format (one whose format held a position, so this glBegin flushed
@@ -374,7 +375,7 @@ void Context::End() {
   if (!immediate_list_) early_join();  // (none in flight: leave_triangle_list joined it) else immediate_to_list
   early_.next = SIZE_MAX;
   const size_t sent = immediate_list_ ? list_corner_.size() : verts_.size();
-  const bool stored = spec_ || lists_.depth > 0 || sink_draws() || sent > wrap_start_ || early_after_wrap_;
+  const bool stored = spec_ || sink_draws() || sent > wrap_start_ || early_after_wrap_;
   if (stored && !spec_) vertices_kept_ = true;
   const auto flush = [&] {
     if (stored) flush_stored_keeping_format();

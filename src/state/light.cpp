@@ -133,6 +133,31 @@ bool Context::set_material(GLenum face, GLenum pname, const double* v) {
       break;
     default: return error(GL_INVALID_ENUM), false;
   }
+  // Each face's parameter is an attribute of Mesa's vbo format (MAT_ATTR): one joining inside
+  // glBegin/glEnd wraps as a normal or colour joining does (vbo_wrap), so the vertices before it are
+  // drawn, and glEnd then finds none stored to ask a flush for. Measured (seed 244949 stream
+  // 14039353168182627223, repro material_joins_format_in_begin.txt): a GL_COMPILE_AND_EXECUTE list's
+  // glMaterialiv on the executing side inside a wrapped GL_POINTS, then glEnd and a state call: the
+  // state call flushes nothing, the material stays in the format, and a glBegin after it copies
+  // nothing (glGetMaterialfv inside it reads the material from before).
+  if (!spec_) {
+    uint32_t joining = 0;
+    for (int f = 0; f < 2; ++f) {
+      if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT)) continue;
+      const auto bit = [f](int k) { return 1u << (f * 8 + k); };
+      switch (pname) {
+        case GL_AMBIENT: joining |= bit(0); break;
+        case GL_DIFFUSE: joining |= bit(1); break;
+        case GL_SPECULAR: joining |= bit(2); break;
+        case GL_EMISSION: joining |= bit(3); break;
+        case GL_AMBIENT_AND_DIFFUSE: joining |= bit(0) | bit(1); break;
+        case GL_SHININESS: joining |= bit(4); break;
+        case GL_COLOR_INDEXES: joining |= bit(5); break;
+      }
+    }
+    if (in_begin_ && (joining & ~material_attrs_)) vbo_wrap(false);
+    material_attrs_ |= joining;
+  }
   for (int f = 0; f < 2; ++f) {
     if (f == 0 && face == GL_BACK) continue;
     if (f == 1 && face == GL_FRONT) continue;
@@ -285,7 +310,7 @@ void Context::flush_current() {
 void Context::flush_stored() {
   if (spec_) return;
   copy_pending();
-  pending_materials_.clear(), material_in_format_ = false;
+  pending_materials_.clear(), material_in_format_ = false, material_attrs_ = 0;
   color_size_ = color_active_ = 0, normal_in_format_ = false;  // the vbo's vertex format is reset
   format_has_position_ = false;
 }
