@@ -51,6 +51,7 @@ class Assembly {
   unsigned edges_ = 7;
   bool reset_ = true;
   bool offset_stage_ = false;  // feedback through the offset stage of Mesa's draw module
+  bool zero_depth_ = false;    // the points or lines of a zero-area triangle the offset stage made NaN (unfilled_triangle)
   bool any_outside_ = false;   // a vertex of a whole primitive lies outside the view volume
   // A smooth clipped sliver was set up (row 63). triangle() runs on the worker threads
   // (triangles_on_threads): it only sets this flag, and run() names the deviation on the calling
@@ -225,6 +226,12 @@ bool Assembly::clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, c
   const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &provoking, true, nullptr, temps);
   if (feedback_ && c_.render_mode_ == GL_FEEDBACK && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
   if (w.empty()) return false;
+  if (feedback_ && zero_depth_) {
+    raster::WindowVertex z[2] = {w[0], w.size() > 1 ? w[1] : w[0]};
+    for (raster::WindowVertex& v : z) v.pos.z = 0;
+    c_.feedback_primitive(kind, z, std::min<size_t>(w.size(), 2), true, rs_, offset_stage_);
+    return true;
+  }
   if (feedback_) {
     c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
     return true;
@@ -259,6 +266,16 @@ bool Assembly::unfilled_triangle(const size_t v[3], size_t provoking) {
   }
   const GLenum mode = c_.polygon_mode_[back ? 1 : 0];
   if (mode == GL_FILL) return false;
+  // Mesa's offset stage comes before the unfilled one: with any offset enable on, a triangle of zero
+  // area gets depths of NaN there (0/0 slopes), clamped to 0 in feedback and selection, and its
+  // points or lines keep them (measured in an OSMesa program: glPolygonMode(GL_BACK, GL_POINT), any of
+  // the three enables, three points at depth 0; seed 1 stream 14737018816213568908, repro
+  // zero_area_unfilled_offset_depth.txt). One with area keeps its depths (row 40).
+  zero_depth_ = !clipped && front_colours && offset_stage_;
+  struct Reset {
+    bool& flag;
+    ~Reset() { flag = false; }
+  } reset_zero{zero_depth_};
   if (clipped) c_.deviations_.insert(kUnfilledClipped);
   const bool use_back = back && rs_.two_side && !front_colours;
   raster::Vertex corner[3];
