@@ -43,9 +43,12 @@ class Assembly {
   Context& c_;
   const raster::State rs_;
   const bool feedback_;
-  // Mesa's draw module runs its pipeline (feedback, glPolygonMode's unfilled stage): quads, quad
-  // strips and polygons take its decomposition.
-  const bool pipeline_ = feedback_ || c_.unfilled();
+  // Mesa's draw module runs its pipeline (feedback, glPolygonMode's unfilled stage, and llvmpipe's
+  // polygon stipple stage, which GL_POLYGON_STIPPLE puts in it even with the all-ones pattern, the
+  // only one soft offers): quads, quad strips and polygons take its decomposition. Measured (seed
+  // 264575 stream 13881488703804146128, repro quad_strip_stipple_split.txt): a smooth quad strip
+  // with GL_POLYGON_STIPPLE on is split as in feedback.
+  const bool pipeline_ = feedback_ || c_.unfilled() || c_.enabled_state(GL_POLYGON_STIPPLE) == 1;
   // The triangle being emitted: which of its edges (bit k: vertex k to k + 1) are edges of the
   // polygon it comes from, and whether it starts a polygon (a new stipple pattern).
   unsigned edges_ = 7;
