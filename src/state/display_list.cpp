@@ -935,15 +935,14 @@ void Context::split_list_node(int joining) {
   // besides the position in its format, its last primitive from glBegin), and so leaves Mesa inside
   // the open primitive (2) or outside (1) until the next vertex list copies (Context::flush_pending).
   const int copy = lists_.node_draw || lists_.attributes == 0 ? 0 : lists_.open ? 2 : 1;
-  // Bit 4: the wrapping attribute came after the open primitive's last vertex, whose values
-  // (list_snapshot_last_vertex) the vertex list before the wrap hands the current values.
-  const int last = joining && lists_.had_vertex && (lists_.trailing & joining) == joining ? 4 : 0;
-  // Bits 16 and 32: a normal or colour already in the format and sent after the open primitive's last
-  // vertex waits in Mesa's vertex template, not in the vertex list before the wrap, which hands the
-  // current values its last vertex's (measured, seed 299792 stream 6292637399379987596: glBegin,
-  // glNormal, glVertex, glNormal, then a first glColor wrapping and a compiled draw of none leave the
-  // first normal after glCallList; repro list_trailing_before_wrap_draw.txt).
-  const int stale = lists_.had_vertex ? (lists_.trailing & lists_.attributes & 3 & ~joining) << 4 : 0;
+  // Bits 16 (normal) and 32 (colour): attributes sent after the open primitive's last vertex, the
+  // wrapping one or one already in the format. They wait in Mesa's vertex template, not in the vertex
+  // list before the wrap, which hands the current values its last vertex's
+  // (list_snapshot_last_vertex). Measured: the wrapping one, repro list_draw_inside_begin_wrapped.txt;
+  // one in the format (seed 299792 stream 6292637399379987596: glBegin, glNormal, glVertex, glNormal,
+  // then a first glColor wrapping and a compiled draw of none leave the first normal after
+  // glCallList), repro list_trailing_before_wrap_draw.txt.
+  const int last = lists_.had_vertex ? (lists_.trailing & (lists_.attributes | joining) & 3) << 4 : 0;
   // Bit 64: the wrapping attribute came before any vertex of the open primitive (list_before_joining).
   const int before = joining && lists_.open && !lists_.had_vertex ? 64 : 0;
   const int element = lists_.held_element ? 128 : 0;
@@ -951,7 +950,7 @@ void Context::split_list_node(int joining) {
   // values to copy, and its copy (playback_copy_to_current) sets Mesa's CurrentExecPrimitive; one of
   // positions alone returns before it (Context::node_ends).
   const int current = lists_.attributes != 0 ? 8 : 0;
-  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | stale | before | element);
+  if (lists_.node_open) lists_.compiling.record<list_node_split>(lists_.node_draw, copy, joining | last | current | before | element);
   note_vertexless_node();
   close_store();
 }
@@ -1006,9 +1005,8 @@ void Context::node_ends(bool draw, int loop, bool copy) {
 }
 
 void Context::node_splits(bool draw, int copy, int joining) {
-  const bool last = joining & 4, current = joining & 8;
-  const int stale = (joining >> 4) & 3;
-  const bool before = joining & 64, element = joining & 128;
+  const bool current = joining & 8, before = joining & 64, element = joining & 128;
+  const int last = (joining >> 4) & 3;
   joining &= 3;
   if (copy && !lists_.replaying_loopback) lists_.mesa_inside = copy == 2;
   flush_pending(true, joining);  // the next vertex list's FLUSH_FOR_DRAW
@@ -1019,10 +1017,8 @@ void Context::node_splits(bool draw, int copy, int joining) {
   // repro list_draw_inside_begin_wrapped.txt).
   keep_node_values(), lists_.node_inside = in_begin_ && current;
   if (element) node_values_.normal = lists_.before_join_normal, node_values_.color = lists_.before_join_color;
-  if (last && (joining & 1)) node_values_.normal = lists_.last_vertex_normal;
-  if (last && (joining & 2)) node_values_.color = lists_.last_vertex_color;
-  if (stale & 1) node_values_.normal = lists_.last_vertex_normal;
-  if (stale & 2) node_values_.color = lists_.last_vertex_color;
+  if (last & 1) node_values_.normal = lists_.last_vertex_normal;
+  if (last & 2) node_values_.color = lists_.last_vertex_color;
   if (before && (joining & 1)) node_values_.normal = lists_.before_join_normal;
   if (before && (joining & 2)) node_values_.color = lists_.before_join_color;
 }
@@ -1092,8 +1088,7 @@ void Context::compile_element(DisplayList& l, GLint i) {
   // vertex carries).
   if (&l == &lists_.compiling && !lists_.compiling_draw && lists_.open && list_executes() && !lists_.fallback)
     l.record<list_value_before_joining>();
-  const bool held = &l == &lists_.held_back && !lists_.compiling_draw;
-  lists_.held_element = held;
+  lists_.held_element = &l == &lists_.held_back && !lists_.compiling_draw;
   // A glArrayElement outside the list's glBegin/glEnd sets the pending values too (end_list_calls).
   const bool compiled = &l == &lists_.compiling && !lists_.compiling_draw;
   const bool outside = compiled && !lists_.open;

@@ -229,14 +229,14 @@ bool Assembly::clip_and_draw(const raster::Vertex& a, const raster::Vertex& b, c
   const raster::WindowPolygon w = raster::clip_and_map(prim_.begin(), 2, rs_, &provoking, true, nullptr, temps);
   if (feedback_ && c_.render_mode_ == GL_FEEDBACK && c_.clip_temps_.read_unwritten) c_.deviations_.insert(kClipTempsUnwritten);
   if (w.empty()) return false;
-  if (feedback_ && zero_depth_) {
-    raster::WindowVertex z[2] = {w[0], w.size() > 1 ? w[1] : w[0]};
-    for (raster::WindowVertex& v : z) v.pos.z = 0;
-    c_.feedback_primitive(kind, z, std::min<size_t>(w.size(), 2), true, rs_, offset_stage_);
-    return true;
-  }
   if (feedback_) {
-    c_.feedback_primitive(kind, w.begin(), w.size(), true, rs_, offset_stage_);
+    raster::WindowVertex zeroed[2];  // a point or a line: two vertices at most
+    const raster::WindowVertex* fed = w.begin();
+    if (zero_depth_) {
+      for (size_t k = 0; k < w.size(); ++k) zeroed[k] = w[k], zeroed[k].pos.z = 0;
+      fed = zeroed;
+    }
+    c_.feedback_primitive(kind, fed, w.size(), true, rs_, offset_stage_);
     return true;
   }
   draw_held_triangles();

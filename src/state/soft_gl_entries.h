@@ -47,6 +47,18 @@ constexpr bool same_entry() {
   else return false;
 }
 
+// The value a glNormal (kind 1), glColor (2) or glVertex (-1) enters the list's store with, as
+// Context::store_vertex takes it: the normal, the colour or position with its fourth component.
+template <auto Fn, typename... A>
+void store_value(Context* c, int kind, const A&... a) {
+  if constexpr (same_entry<Fn, &NormalValues>()) {
+    c->store_vertex(kind, glm::dvec4(a..., 0.0));
+  } else {
+    const auto v = std::tie(a...);
+    c->store_vertex(kind, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
+  }
+}
+
 template <ListKind K, auto Fn, typename... A>
 bool compiled_only(const A&... a) {
   Context* c = C();
@@ -87,12 +99,8 @@ bool compiled_only(const A&... a) {
     c->end_list_node();  // Mesa's vertex lists: display_list.cpp, Context::start_list_node
     l->record<Fn>(a...);
     // The compiler's own current value too (ListState.CurrentAttrib: Context::copied_vertex_values).
-    if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1), c->store_vertex(1, glm::dvec4(a..., 0.0));
-    if constexpr (same_entry<Fn, &ColorValues>()) {
-      c->mark_list_attribute(*l, 2);
-      const auto v = std::tie(a...);
-      c->store_vertex(2, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
-    }
+    if constexpr (same_entry<Fn, &NormalValues>()) c->mark_list_attribute(*l, 1), store_value<Fn>(c, 1, a...);
+    if constexpr (same_entry<Fn, &ColorValues>()) c->mark_list_attribute(*l, 2), store_value<Fn>(c, 2, a...);
     if (!c->list_executes()) return true;
     c->run_held_back();
     return false;
@@ -157,11 +165,8 @@ bool compiled_only(const A&... a) {
     if constexpr (same_entry<Fn, &EdgeFlag>()) kind = 8;
     c->hold_back(kind, size);  // in GL_COMPILE too: the list's own wraps are named there (display_list.cpp)
     // The values entering the store, for the repeats Mesa's compiler removes (display_list.cpp).
-    if constexpr (same_entry<Fn, &NormalValues>()) c->store_vertex(kind, glm::dvec4(a..., 0.0));
-    if constexpr (same_entry<Fn, &VertexValues>() || same_entry<Fn, &ColorValues>()) {
-      const auto v = std::tie(a...);
-      c->store_vertex(kind, glm::dvec4(std::get<0>(v), std::get<1>(v), std::get<2>(v), std::get<3>(v)));
-    }
+    if constexpr (same_entry<Fn, &NormalValues>() || same_entry<Fn, &VertexValues>() || same_entry<Fn, &ColorValues>())
+      store_value<Fn>(c, kind, a...);
     if constexpr (same_entry<Fn, &VertexValues>())
       if (ls.open && c->list_executes()) c->list_vertex_compiled(c->list_held_back(), 0, true);
     if (c->list_executes()) c->list_held_back().record<Fn>(a...);

@@ -123,7 +123,8 @@ class VertexStage {
         float_arrays_(from_arrays && c.float_arrays()),
         inv_(c.normal_matrix_),
         rescale_(c.rescale_normal_ ? glm::length(glm::dvec3(inv_[0][2], inv_[1][2], inv_[2][2])) : 0.0),  // M^-1's third row
-        fog_depth_(c.fog_ && c.fog_coord_src_ == GL_FRAGMENT_DEPTH) {}
+        fog_depth_(c.fog_ && c.fog_coord_src_ == GL_FRAGMENT_DEPTH),
+        constant_color_(!c.color_varies_ && !c.color_in_begin_format_) {}
 
   bool fog_depth() const { return fog_depth_; }
 
@@ -157,7 +158,7 @@ class VertexStage {
       // current fog coordinate, which stays 0 here (no glFogCoord).
       if (fog_depth_) out.fog[j] = std::abs(double(e.z));
       if (!lit) {
-        for (int k = 0; k < 4; ++k) out.unlit[j][k] = clamp_unlit(in.color[k], constant_color());
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = clamp_unlit(in.color[k], constant_color_);
         continue;
       }
       // GL 2.1 lights the vertex at its eye-space point (x/w, y/w, z/w); Mesa's fixed-function program
@@ -194,7 +195,7 @@ class VertexStage {
       const VertexIn in = fetch(first + j);
       for (int k = 0; k < 4; ++k) obj[k][j] = float(in.obj[k]);
       if (!lit) {
-        for (int k = 0; k < 4; ++k) out.unlit[j][k] = clamp_unlit(in.color[k], constant_color());
+        for (int k = 0; k < 4; ++k) out.unlit[j][k] = clamp_unlit(in.color[k], constant_color_);
         continue;
       }
       for (int k = 0; k < 4; ++k) color[k][j] = float(in.color[k]);
@@ -235,7 +236,7 @@ class VertexStage {
     if (!lit) {
       for (int j = 0; j < m; ++j) {
         const glm::dvec4 c = colors ? colors[j] : f.cur_color;
-        for (int k = 0; k < 4; ++k) unlit[j][k] = clamp_unlit(c[k], constant_color());  // as run_columns
+        for (int k = 0; k < 4; ++k) unlit[j][k] = clamp_unlit(c[k], constant_color_);  // as run_columns
       }
       return;
     }
@@ -314,7 +315,7 @@ class VertexStage {
         for (int k = 0; k < 4; ++k) rgba[k] = c_.color_[k];
       }
       if (!lit) {  // as run_columns clamps it
-        for (int k = 0; k < 4; ++k) unlit[j][k] = clamp_unlit(rgba[k], constant_color());
+        for (int k = 0; k < 4; ++k) unlit[j][k] = clamp_unlit(rgba[k], constant_color_);
         continue;
       }
       for (int k = 0; k < 4; ++k) color[k][j] = ca.enabled ? float(rgba[k]) : current[k];
@@ -338,12 +339,12 @@ class VertexStage {
   }
 
   const Context& c_;
-  // The current colour drawn for every vertex (clamp_unlit): none per vertex in Mesa.
-  bool constant_color() const { return !c_.color_varies_ && !c_.color_in_begin_format_; }
+
   const bool float_arrays_;
   const glm::dmat3 inv_;
   const double rescale_;  // 0: no rescale
   const bool fog_depth_;
+  const bool constant_color_;  // the current colour drawn for every vertex, none per vertex in Mesa (clamp_unlit)
 };
 
 namespace {
