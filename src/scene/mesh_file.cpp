@@ -392,6 +392,19 @@ void check_ply(const std::string& data) {
       corrupt("element '" + e.name + "' declares " + std::to_string(e.count) + " entries, more than the " +
               std::to_string(body) + " bytes of data can hold");
   if (format == "ascii") {
+    // OpenMesh reads each value with operator>> of its type: a word that is not one whole number of
+    // that type ("0H0", "1.5" for an int) leaves its stream failed or out of step, and it then reads
+    // list counts it never wrote and grows a face's vertex list until memory runs out (found by
+    // fuzz/ under AddressSanitizer: an index "0H0"; corpus ply_index_not_a_number.ply).
+    const auto number = [](const std::string& w, const std::string& type) {
+      const char* b = w.c_str();
+      char* end = nullptr;
+      // Decimal only: operator>> stops inside "nan", "inf" and hexadecimal floats that strtod takes.
+      if (w.find_first_not_of("0123456789+-.eE") != std::string::npos) return false;
+      if (ply_is_float(type)) (void)std::strtod(b, &end);
+      else (void)std::strtoll(b, &end, 10);
+      return end != b && *end == '\0';
+    };
     std::istringstream in(data.substr(pos));
     std::string w;
     for (const auto& e : elements)
@@ -399,11 +412,16 @@ void check_ply(const std::string& data) {
         for (const auto& p : e.props) {
           const std::string where = "element '" + e.name + "' " + std::to_string(i) + " property '" + p.name + "'";
           if (!(in >> w)) corrupt("the data ends in " + where);
-          if (!p.list) continue;
+          if (!p.list) {
+            if (!number(w, p.item_type)) corrupt(where + " is '" + w + "', not a " + p.item_type);
+            continue;
+          }
           long long n = 0;
           if (!parse_count(w, n) || n > max_list_length) corrupt(where + " has list length '" + w + "'");
-          for (long long k = 0; k < n; ++k)
+          for (long long k = 0; k < n; ++k) {
             if (!(in >> w)) corrupt("the data ends in " + where);
+            if (!number(w, p.item_type)) corrupt(where + " has item '" + w + "', not a " + p.item_type);
+          }
         }
     return;
   }

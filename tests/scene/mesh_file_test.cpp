@@ -190,6 +190,12 @@ std::vector<BadMesh> bad_meshes() {
       {"ply_unknown_type", "type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n",
        "unknown type 'quad'"},
       {"ply_bad_index", "bad_index.ply", ply_head + "3 0 1 7\n", "OpenMesh dropped faces"},
+      // OpenMesh's operator>> stops inside such a word and then grows a face without end (found by
+      // fuzzing: out of memory).
+      {"ply_index_not_a_number", "index_word.ply", ply_head + "3 0 1H0 2\n",
+       "element 'face' 0 property 'vertex_indices' has item '1H0', not a "},
+      {"ply_coordinate_nan", "nan.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\nnan\n",
+       "element 'vertex' 0 property 'x' is 'nan', not a float"},
       {"stl_size_mismatch", "short.stl", binary_stl(1, 1000), "has no faces"},
   };
 }
